@@ -1,0 +1,63 @@
+// GlContext: an OpenGL 4.5 core context made current on this thread, from one backend.
+//
+// Backends: OSMesa (dlopen()ed, renders into a small client buffer; Shadowlab draws into its
+// own framebuffers) and EGL surfaceless (Mesa). A window backend (GLFW) implements the same
+// interface: it adds a surface, nothing in the renderer changes.
+#pragma once
+
+#include "gl_api.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace sl {
+
+enum class BackendKind { Auto, OSMesa, Egl };
+
+BackendKind parseBackendKind(const std::string& name);  // "auto" | "osmesa" | "egl"
+const char* toString(BackendKind);
+
+// No backend could give a 4.5 core context. what() lists every attempt, why it failed, and
+// which Debian package provides the missing piece.
+class BackendError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct ContextInfo {
+    std::string backend;    // "osmesa" | "egl"
+    std::string vendor;     // GL_VENDOR
+    std::string renderer;   // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    std::string version;    // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
+    std::string mesaVersion;  // "22.3.6", parsed from GL_VERSION ("" if not Mesa)
+    bool isSoftware() const;  // llvmpipe / softpipe
+};
+
+class GlContext {
+public:
+    virtual ~GlContext() = default;
+    virtual GlProc getProcAddress(const char* name) = 0;
+    virtual void makeCurrent() = 0;
+    // Makes this context current again and re-resolves gl:: through it (after another
+    // context, of any backend, was current on this thread).
+    void activate();
+    const ContextInfo& info() const { return info_; }
+
+protected:
+    ContextInfo info_;
+};
+
+// Creates a context, makes it current and loads the gl:: functions. `Auto` takes OSMesa if
+// libOSMesa can be loaded and EGL otherwise. Unless SHADOWLAB_ALLOW_HARDWARE=1, Mesa is asked
+// for llvmpipe (LIBGL_ALWAYS_SOFTWARE, GALLIUM_DRIVER) so that images are reproducible.
+std::unique_ptr<GlContext> createContext(BackendKind kind);
+
+// Backend constructors; each throws BackendError with its own reason.
+std::unique_ptr<GlContext> createOSMesaContext();
+std::unique_ptr<GlContext> createEglContext();
+
+// Fills `info` from the current context and loads gl::. Shared by the backends.
+void finishContextSetup(GlContext& context, ContextInfo& info, const std::string& backend);
+
+}  // namespace sl

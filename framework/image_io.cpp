@@ -1,0 +1,101 @@
+// image_io: OpenImageIO output and input, previews, hashes (see image_io.h).
+#include "image_io.h"
+
+#include <OpenImageIO/imageio.h>
+#include <openssl/evp.h>
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+namespace sl {
+namespace {
+
+// Flips between GL's bottom-first rows and the files' top-first rows.
+std::vector<float> flipRows(const Image& img) {
+    std::vector<float> out(img.pixels.size());
+    const size_t row = size_t(img.width) * img.channels;
+    for (int y = 0; y < img.height; ++y)
+        std::copy_n(img.pixels.begin() + size_t(y) * row, row,
+                    out.begin() + size_t(img.height - 1 - y) * row);
+    return out;
+}
+
+void writeWith(const fs::path& path, const OIIO::ImageSpec& spec, const void* data,
+               OIIO::TypeDesc type) {
+    auto out = OIIO::ImageOutput::create(path.string());
+    if (!out) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
+    if (!out->open(path.string(), spec) || !out->write_image(type, data))
+        throw std::runtime_error(path.string() + ": " + out->geterror());
+    out->close();
+}
+
+}  // namespace
+
+void writeExr(const Image& image, const fs::path& path) {
+    OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
+    spec.attribute("compression", "zip");
+    if (image.channels == 1) spec.channelnames = {"Y"};
+    auto flipped = flipRows(image);
+    writeWith(path, spec, flipped.data(), OIIO::TypeDesc::FLOAT);
+}
+
+Image readImage(const fs::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
+    const auto& spec = in->spec();
+    Image img(spec.width, spec.height, spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+        throw std::runtime_error(path.string() + ": " + in->geterror());
+    img.pixels = flipRows(img);
+    return img;
+}
+
+void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
+    const int outChannels = image.channels == 1 ? 1 : 3;
+    Image rgb(image.width, image.height, 3);
+    bool anyBroken = false;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            bool broken = false;
+            for (int c = 0; c < image.channels; ++c) {
+                float v = image.at(x, y, c);
+                broken |= !std::isfinite(v) || v == -1.0f;
+            }
+            anyBroken |= broken;
+            for (int c = 0; c < 3; ++c) {
+                float v = image.at(x, y, std::min(c, image.channels - 1));
+                if (srgb) v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
+                rgb.at(x, y, c) = broken ? (c == 1 ? 0.0f : 1.0f) : std::clamp(v, 0.0f, 1.0f);
+            }
+        }
+    // Grey images stay single-channel unless magenta must show.
+    const int channels = (outChannels == 1 && !anyBroken) ? 1 : 3;
+    std::vector<unsigned char> bytes(size_t(image.width) * image.height * channels);
+    auto flipped = flipRows(rgb);
+    for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
+        for (int c = 0; c < channels; ++c)
+            bytes[i * channels + c] =
+                static_cast<unsigned char>(std::lround(flipped[i * 3 + c] * 255.0f));
+    OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
+    writeWith(path, spec, bytes.data(), OIIO::TypeDesc::UINT8);
+}
+
+std::string sha256File(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path.string() + ": cannot be read");
+    EVP_MD_CTX* ctx = EVP_MD_CTX_new();
+    EVP_DigestInit_ex(ctx, EVP_sha256(), nullptr);
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) EVP_DigestUpdate(ctx, buf, in.gcount());
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int len = 0;
+    EVP_DigestFinal_ex(ctx, digest, &len);
+    EVP_MD_CTX_free(ctx);
+    static const char* hex = "0123456789abcdef";
+    std::string s;
+    for (unsigned i = 0; i < len; ++i) s += {hex[digest[i] >> 4], hex[digest[i] & 15]};
+    return s;
+}
+
+}  // namespace sl

@@ -1,0 +1,25 @@
+// image_io: writing and reading images with OpenImageIO, the PNG previews, and SHA-256.
+#pragma once
+
+#include "image.h"
+
+#include <filesystem>
+#include <string>
+
+namespace sl {
+
+namespace fs = std::filesystem;
+
+// Float EXR (ZIP compression, no timestamp, so equal pixels give equal bytes). Throws
+// std::runtime_error naming the file.
+void writeExr(const Image& image, const fs::path& path);
+Image readImage(const fs::path& path);  // any format OIIO reads, converted to float
+
+// 8-bit PNG of `image`'s first three channels (one channel: grey), clamped to [0, 1] after an
+// sRGB encoding if `srgb`. Stub values (-1) and NaN are shown in magenta so that an
+// unimplemented or broken stage is visible at a glance.
+void writePngPreview(const Image& image, const fs::path& path, bool srgb);
+
+std::string sha256File(const fs::path& path);  // lowercase hex
+
+}  // namespace sl

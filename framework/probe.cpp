@@ -1,0 +1,52 @@
+// probe: one dispatch of shaders/probe_*.comp over SSBOs (see probe.h).
+#include "probe.h"
+
+#include "gl_program.h"
+#include "gpu_resources.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sl {
+namespace {
+
+template <typename Out>
+std::vector<Out> runProbe(const GlProgram& program, size_t count) {
+    std::vector<Out> results(count);
+    BufferHandle out = createBuffer(nullptr, GLsizeiptr(std::max<size_t>(count, 1) * sizeof(Out)));
+    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, out.id());
+    program.use();
+    program.set("uCount", int(count));
+    gl::DispatchCompute(GLuint((count + 63) / 64), 1, 1);
+    gl::MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (count) gl::GetNamedBufferSubData(out.id(), 0, GLsizeiptr(count * sizeof(Out)), results.data());
+    return results;
+}
+
+}  // namespace
+
+std::vector<float> probeMomentShadowIntensity(const ShaderLibrary& library,
+                                              const std::vector<glm::vec4>& b,
+                                              const std::vector<float>& zf, float momentBias) {
+    if (b.size() != zf.size()) throw std::invalid_argument("probe: b and zf differ in length");
+    GlProgram program = GlProgram::compute(library, "probe_msm.comp", {"SL_TECHNIQUE_MSM4"});
+    program.set("uMomentBias", momentBias);
+    BufferHandle bBuf = createBuffer(b.data(), GLsizeiptr(std::max<size_t>(b.size(), 1) * 16));
+    BufferHandle zBuf = createBuffer(zf.data(), GLsizeiptr(std::max<size_t>(zf.size(), 1) * 4));
+    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bBuf.id());
+    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, zBuf.id());
+    return runProbe<float>(program, b.size());
+}
+
+std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
+                                    const std::vector<glm::vec3>& inputs) {
+    GlProgram program = GlProgram::compute(library, "probe_moments.comp", {});
+    std::vector<glm::vec4> padded;
+    for (const auto& v : inputs) padded.emplace_back(v, 0.0f);
+    BufferHandle in = createBuffer(padded.data(),
+                                   GLsizeiptr(std::max<size_t>(padded.size(), 1) * 16));
+    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    return runProbe<glm::vec4>(program, inputs.size());
+}
+
+}  // namespace sl

@@ -1,0 +1,49 @@
+// render_output: files and sidecar of one render (see render_output.h).
+#include "render_output.h"
+
+#include "image_io.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace sl {
+
+nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
+                                  const RenderResult& result, const RenderMetadata& meta,
+                                  const std::filesystem::path& outDir) {
+    std::filesystem::create_directories(outDir);
+    nlohmann::json files = nlohmann::json::object();
+    auto record = [&](const std::string& file) {
+        files[file] = sha256File(outDir / file);
+    };
+    for (const auto& [name, image] : result.images) {
+        writeExr(image, outDir / (name + ".exr"));
+        record(name + ".exr");
+        const bool isSat = name.rfind("sat", 0) == 0;  // sums, not viewable values
+        if (isSat) continue;
+        writePngPreview(image, outDir / (name + ".png"), name.rfind("final", 0) == 0);
+        record(name + ".png");
+    }
+    nlohmann::json passes = nlohmann::json::array();
+    for (size_t i = 0; i < plan.passes.size(); ++i)
+        passes.push_back({{"pass", toString(plan.passes[i].kind)},
+                          {"why", plan.passes[i].why},
+                          {"milliseconds", i < result.passMillis.size() ? result.passMillis[i]
+                                                                        : 0.0}});
+    nlohmann::json sidecar = {
+        {"scene", scene.path},
+        {"solution", meta.solution},
+        {"backend", meta.context.backend},
+        {"renderer", meta.context.renderer},
+        {"glVersion", meta.context.version},
+        {"mesaVersion", meta.context.mesaVersion},
+        {"passes", passes},
+        {"notImplemented", result.stubNotes},
+        {"sha256", files},
+    };
+    std::ofstream(outDir / "render.json") << sidecar.dump(2) << "\n";
+    return sidecar;
+}
+
+}  // namespace sl

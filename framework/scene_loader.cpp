@@ -1,0 +1,476 @@
+// scene_loader: reads a scene JSON file (format: docs/scenes.md) into sl::Scene and validates
+// every value on the way. A scene is hand-written by instructors and students, so every
+// mistake must come back as one clear line:
+//   "<file>: <json pointer>: expected <what>, found <what was there, or nothing>".
+// Unknown keys are errors (they are almost always typos), and so is invalid JSON, reported
+// as "<file>:<line>:<column>: invalid JSON ...".
+#include "scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <vector>
+
+namespace sl {
+namespace {
+
+using json = nlohmann::json;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string formatNumber(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+// The value as it appears in the file, shortened so that a whole object stays one line.
+std::string dumpShort(const json& v) {
+    std::string s = v.dump();
+    return s.size() > 72 ? s.substr(0, 69) + "..." : s;
+}
+
+std::string quotedList(const std::vector<std::string>& items) {
+    std::string out;
+    for (size_t i = 0; i < items.size(); ++i) out += (i ? ", \"" : "\"") + items[i] + "\"";
+    return out;
+}
+
+// An allowed interval of numbers; describes itself for the "expected ..." part of a message.
+struct Range {
+    double lo = -kInf, hi = kInf;
+    bool loOpen = false, hiOpen = false;
+
+    static Range any() { return {}; }
+    static Range positive() { return {0.0, kInf, true, false}; }
+    static Range atLeast(double lo) { return {lo, kInf, false, false}; }
+    static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
+    static Range open(double lo, double hi) { return {lo, hi, true, true}; }
+
+    bool contains(double v) const {
+        return std::isfinite(v) && (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
+    }
+    std::string describe(bool integer) const {
+        std::string kind = integer ? "an integer" : "a number";
+        if (lo == -kInf && hi == kInf) return kind;
+        if (hi == kInf) return kind + (loOpen ? " > " : " >= ") + formatNumber(lo);
+        if (lo == -kInf) return kind + (hiOpen ? " < " : " <= ") + formatNumber(hi);
+        return kind + " in " + (loOpen ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) +
+               (hiOpen ? ")" : "]");
+    }
+};
+
+// A value in the document and its JSON pointer; `v` is null when the key is absent, so that
+// "missing" and "wrong" go through the same checks ("found nothing").
+struct Node {
+    const json* v = nullptr;
+    std::string ptr;
+
+    explicit operator bool() const { return v != nullptr; }
+    Node operator[](const std::string& key) const {
+        std::string escaped;  // RFC 6901: '~' -> "~0", '/' -> "~1"
+        for (char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
+        const json* child = nullptr;
+        if (v && v->is_object()) {
+            auto it = v->find(key);
+            if (it != v->end()) child = &*it;
+        }
+        return {child, ptr + "/" + escaped};
+    }
+    Node operator[](size_t i) const {
+        return {v && v->is_array() && i < v->size() ? &(*v)[i] : nullptr,
+                ptr + "/" + std::to_string(i)};
+    }
+};
+
+class Reader {
+public:
+    explicit Reader(std::string file) : file_(std::move(file)) {}
+
+    [[noreturn]] void fail(const Node& n, const std::string& expected) const {
+        fail(n.ptr, expected, n ? dumpShort(*n.v) : "nothing");
+    }
+    [[noreturn]] void fail(const std::string& ptr, const std::string& expected,
+                           const std::string& found) const {
+        throw SceneError(file_ + ": " + (ptr.empty() ? "/" : ptr) + ": expected " + expected +
+                         ", found " + found);
+    }
+
+    // An object whose keys are all in `allowed`; `what` names it ("a light", "a sphere").
+    void object(const Node& n, const std::vector<std::string>& allowed,
+                const std::string& what) const {
+        if (!n || !n.v->is_object()) fail(n, "an object (" + what + ")");
+        for (const auto& item : n.v->items())
+            if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
+                fail(n[item.key()].ptr, "one of the keys " + quotedList(allowed) + " for " + what,
+                     "unknown key \"" + item.key() + "\"");
+    }
+    size_t array(const Node& n, size_t minSize, const std::string& what) const {
+        if (!n || !n.v->is_array() || n.v->size() < minSize) fail(n, what);
+        return n.v->size();
+    }
+    double number(const Node& n, const Range& r) const {
+        if (!n || !n.v->is_number() || !r.contains(n.v->get<double>())) fail(n, r.describe(false));
+        return n.v->get<double>();
+    }
+    int integer(const Node& n, const Range& r) const {
+        if (!n || !n.v->is_number_integer() || !r.contains(n.v->get<double>()))
+            fail(n, r.describe(true));
+        return n.v->get<int>();
+    }
+    glm::vec3 vec3(const Node& n, const Range& r) const {
+        std::string what = "an array of 3 numbers";
+        if (r.lo != -kInf || r.hi != kInf) what += " (each " + r.describe(false) + ")";
+        if (!n || !n.v->is_array() || n.v->size() != 3) fail(n, what);
+        return {float(number(n[0], r)), float(number(n[1], r)), float(number(n[2], r))};
+    }
+    std::string string(const Node& n, bool nonEmpty = false) const {
+        if (!n || !n.v->is_string() || (nonEmpty && n.v->get<std::string>().empty()))
+            fail(n, nonEmpty ? "a non-empty string" : "a string");
+        return n.v->get<std::string>();
+    }
+    bool boolean(const Node& n) const {
+        if (!n || !n.v->is_boolean()) fail(n, "true or false");
+        return n.v->get<bool>();
+    }
+    // One of a fixed set of strings; returns its index.
+    int choice(const Node& n, const std::vector<std::string>& options) const {
+        if (n && n.v->is_string()) {
+            auto it = std::find(options.begin(), options.end(), n.v->get<std::string>());
+            if (it != options.end()) return int(it - options.begin());
+        }
+        fail(n, "one of " + quotedList(options));
+    }
+
+    const std::string& file() const { return file_; }
+
+private:
+    std::string file_;
+};
+
+// The names the file uses for the enums, in the order of their values.
+const std::vector<std::string> kLightTypes = {"spot", "directional"};
+const std::vector<std::string> kShapes = {"plane", "box", "sphere", "cylinder", "torus", "mesh"};
+const std::vector<std::string> kFilters = {"none", "gaussian", "sat"};
+const std::vector<std::string> kTechniques = {"msm4"};
+
+Camera readCamera(const Reader& R, const Node& n, bool nameRequired) {
+    R.object(n, {"name", "position", "target", "up", "fovYDegrees", "near", "far", "width", "height"},
+             "a camera");
+    Camera c;
+    if (nameRequired || n["name"]) c.name = R.string(n["name"], true);
+    c.position = R.vec3(n["position"], Range::any());
+    c.target = R.vec3(n["target"], Range::any());
+    if (auto u = n["up"]) c.up = R.vec3(u, Range::any());
+    if (auto f = n["fovYDegrees"]) c.fovYDegrees = float(R.number(f, Range::open(0, 180)));
+    if (auto v = n["near"]) c.nearPlane = float(R.number(v, Range::positive()));
+    if (auto v = n["far"]) c.farPlane = float(R.number(v, Range{c.nearPlane, kInf, true, false}));
+    if (c.farPlane <= c.nearPlane)
+        R.fail(n["near"], "a number < far (" + formatNumber(c.farPlane) + ")");
+    if (auto v = n["width"]) c.width = R.integer(v, Range::closed(16, 4096));
+    if (auto v = n["height"]) c.height = R.integer(v, Range::closed(16, 4096));
+    const glm::vec3 forward = c.target - c.position;
+    if (glm::length(forward) < 1e-6f)
+        R.fail(n["target"], "a point different from the position");
+    if (glm::length(glm::cross(glm::normalize(forward), c.up)) < 1e-3f)
+        R.fail(n["up"], "an up vector not parallel to the viewing direction (default [0, 1, 0])");
+    return c;
+}
+
+Light readLight(const Reader& R, const Node& n) {
+    if (!n || !n.v->is_object()) R.fail(n, "an object (a light)");
+    Light l;
+    l.type = LightType(R.choice(n["type"], kLightTypes));
+    const bool spot = l.type == LightType::Spot;
+    std::vector<std::string> keys = {"type", "position", "target", "color", "intensity", "size",
+                                     "castsShadows"};
+    keys.push_back(spot ? "coneDegrees" : "extent");
+    R.object(n, keys, spot ? "a spot light" : "a directional light");
+    l.position = R.vec3(n["position"], Range::any());
+    l.target = R.vec3(n["target"], Range::any());
+    if (glm::length(l.target - l.position) < 1e-6f)
+        R.fail(n["target"], "a point different from the position");
+    if (auto v = n["color"]) l.color = R.vec3(v, Range::atLeast(0));
+    if (auto v = n["intensity"]) l.intensity = float(R.number(v, Range::atLeast(0)));
+    if (auto v = n["size"]) l.size = float(R.number(v, Range::atLeast(0)));
+    if (auto v = n["castsShadows"]) l.castsShadows = R.boolean(v);
+    if (auto v = n["coneDegrees"]) l.coneDegrees = float(R.number(v, Range::open(0, 170)));
+    if (auto v = n["extent"]) l.extent = float(R.number(v, Range::positive()));
+    return l;
+}
+
+// "size" of a plane: [width (x), depth (z)] or one number for a square; of a box: [x, y, z]
+// or one number for a cube.
+glm::vec3 readSize(const Reader& R, const Node& n, int components) {
+    const std::string what = components == 2 ? "a number > 0 or an array of 2 numbers > 0"
+                                             : "a number > 0 or an array of 3 numbers > 0";
+    if (n && n.v->is_number()) return glm::vec3(float(R.number(n, Range::positive())));
+    if (!n || !n.v->is_array() || int(n.v->size()) != components) R.fail(n, what);
+    glm::vec3 s(0.0f);
+    for (int i = 0; i < components; ++i) s[i] = float(R.number(n[size_t(i)], Range::positive()));
+    return s;
+}
+
+Object readObject(const Reader& R, const Node& n, size_t index) {
+    if (!n || !n.v->is_object()) R.fail(n, "an object (a scene object)");
+    Object o;
+    o.shape = ShapeType(R.choice(n["shape"], kShapes));
+    const std::string shape = toString(o.shape);
+    std::vector<std::string> keys = {"name", "shape", "translate", "rotateDegrees", "scale",
+                                     "color", "specular", "shininess", "castsShadows"};
+    switch (o.shape) {
+        case ShapeType::Plane:
+        case ShapeType::Box: keys.push_back("size"); break;
+        case ShapeType::Sphere: keys.push_back("radius"); break;
+        case ShapeType::Cylinder: keys.insert(keys.end(), {"radius", "height"}); break;
+        case ShapeType::Torus: keys.insert(keys.end(), {"majorRadius", "minorRadius"}); break;
+        case ShapeType::Mesh: keys.push_back("path"); break;
+    }
+    R.object(n, keys, "a " + shape);
+    o.name = n["name"] ? R.string(n["name"], true) : shape + std::to_string(index);
+
+    switch (o.shape) {
+        case ShapeType::Plane: {
+            glm::vec3 s = readSize(R, n["size"], 2);
+            o.planeSize = {s.x, s.y};
+            break;
+        }
+        case ShapeType::Box: o.boxSize = readSize(R, n["size"], 3); break;
+        case ShapeType::Sphere: o.radius = float(R.number(n["radius"], Range::positive())); break;
+        case ShapeType::Cylinder:
+            o.radius = float(R.number(n["radius"], Range::positive()));
+            o.height = float(R.number(n["height"], Range::positive()));
+            break;
+        case ShapeType::Torus:
+            o.majorRadius = float(R.number(n["majorRadius"], Range::positive()));
+            o.minorRadius = float(
+                R.number(n["minorRadius"], Range{0.0, double(o.majorRadius), true, true}));
+            break;
+        case ShapeType::Mesh: {
+            const Node p = n["path"];
+            const std::string written = R.string(p, true);
+            namespace fs = std::filesystem;
+            const fs::path full = (fs::path(R.file()).parent_path() / written).lexically_normal();
+            std::error_code ec;
+            if (!fs::is_regular_file(full, ec))
+                R.fail(p.ptr, "the path of an OBJ file relative to the scene file's directory",
+                       dumpShort(*p.v) + " (no such file: " + full.string() + ")");
+            o.meshPath = full.string();
+            break;
+        }
+    }
+
+    if (auto v = n["translate"]) o.translate = R.vec3(v, Range::any());
+    if (auto v = n["rotateDegrees"]) o.rotateDegrees = R.vec3(v, Range::any());
+    if (auto v = n["scale"]) {
+        // Positive only: a mirroring scale would turn the winding inside out.
+        o.scale = v.v->is_number() ? glm::vec3(float(R.number(v, Range::positive())))
+                                   : R.vec3(v, Range::positive());
+    }
+    if (auto v = n["color"]) o.color = R.vec3(v, Range::atLeast(0));
+    if (auto v = n["specular"]) o.specular = float(R.number(v, Range::atLeast(0)));
+    if (auto v = n["shininess"]) o.shininess = float(R.number(v, Range::closed(1, 10000)));
+    if (auto v = n["castsShadows"]) o.castsShadows = R.boolean(v);
+    return o;
+}
+
+void readFilter(const Reader& R, const Node& n, ShadowEffect& fx) {
+    if (!n || !n.v->is_object()) R.fail(n, "an object such as {\"type\": \"gaussian\", \"radius\": 4}");
+    fx.filter = FilterKind(R.choice(n["type"], kFilters));
+    switch (fx.filter) {
+        case FilterKind::None: R.object(n, {"type"}, "filter \"none\""); break;
+        case FilterKind::Gaussian:
+            R.object(n, {"type", "radius", "sigma"}, "filter \"gaussian\"");
+            if (auto v = n["radius"]) fx.gaussianRadius = R.integer(v, Range::closed(0, 64));
+            fx.gaussianSigma = 0.5f * float(fx.gaussianRadius);
+            if (auto v = n["sigma"]) fx.gaussianSigma = float(R.number(v, Range::positive()));
+            break;
+        case FilterKind::Sat:
+            R.object(n, {"type", "kernel"}, "filter \"sat\"");
+            // The box may not be wider than the map it averages.
+            if (auto v = n["kernel"])
+                fx.satKernelTexels = float(R.number(v, Range::closed(1, fx.mapSize)));
+            break;
+    }
+}
+
+ShadowEffect readShadow(const Reader& R, const Node& n) {
+    R.object(n, {"technique", "mapSize", "depthRange", "filter", "momentBias", "depthBias"},
+             "the shadow effect");
+    ShadowEffect fx;
+    if (auto v = n["technique"]) fx.technique = Technique(R.choice(v, kTechniques));
+    if (auto v = n["mapSize"]) {
+        const int size = R.integer(v, Range::closed(64, 4096));
+        if (size & (size - 1)) R.fail(v, "a power of two in [64, 4096]");
+        fx.mapSize = size;
+    }
+    if (auto v = n["depthRange"]) {
+        const std::string what = "\"auto\" or an array [near, far] with 0 <= near < far";
+        if (v.v->is_string() && v.v->get<std::string>() == "auto") {
+            fx.depthRange.reset();
+        } else {
+            if (!v.v->is_array() || v.v->size() != 2) R.fail(v, what);
+            const double nearD = R.number(v[0], Range::atLeast(0));
+            const double farD = R.number(v[1], Range{nearD, kInf, true, false});
+            fx.depthRange = glm::vec2(float(nearD), float(farD));
+        }
+    }
+    if (auto v = n["filter"]) readFilter(R, v, fx);
+    if (auto v = n["momentBias"]) fx.momentBias = float(R.number(v, Range::closed(0, 0.1)));
+    if (auto v = n["depthBias"]) fx.depthBias = float(R.number(v, Range::closed(0, 0.1)));
+    return fx;
+}
+
+ShadowProbe readProbe(const Reader& R, const Node& n, const std::vector<Camera>& cameras) {
+    R.object(n, {"camera", "pixel", "shadow", "tolerance", "why"}, "a probe");
+    ShadowProbe p;
+    p.camera = cameras.front().name;
+    const Camera* camera = &cameras.front();
+    if (auto v = n["camera"]) {
+        std::vector<std::string> names;
+        for (const Camera& c : cameras) names.push_back(c.name);
+        camera = &cameras[size_t(R.choice(v, names))];
+        p.camera = camera->name;
+    }
+    const Node px = n["pixel"];
+    if (!px || !px.v->is_array() || px.v->size() != 2)
+        R.fail(px, "an array [x, y] of 2 integers (y = 0 is the top row)");
+    p.pixel.x = R.integer(px[0], Range::closed(0, camera->width - 1));
+    p.pixel.y = R.integer(px[1], Range::closed(0, camera->height - 1));
+    p.shadow = float(R.number(n["shadow"], Range::closed(0, 1)));
+    if (auto v = n["tolerance"]) p.tolerance = float(R.number(v, Range{0, 1, true, false}));
+    p.why = R.string(n["why"], true);
+    return p;
+}
+
+// nlohmann reports the 1-based index of the last character it read; turn it into line:column.
+std::string lineColumn(const std::string& text, size_t byte) {
+    const size_t at = std::min(byte > 0 ? byte - 1 : 0, text.size());
+    size_t line = 1, lineStart = 0;
+    for (size_t i = 0; i < at; ++i)
+        if (text[i] == '\n') ++line, lineStart = i + 1;
+    return std::to_string(line) + ":" + std::to_string(at - lineStart + 1);
+}
+
+// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
+std::string parseDetail(const std::string& what) {
+    const size_t colon = what.find(": ");
+    return colon == std::string::npos ? what : what.substr(colon + 2);
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& jsonText, const std::string& path) {
+    json root;
+    try {
+        root = json::parse(jsonText);
+    } catch (const json::parse_error& e) {
+        const std::string lc = lineColumn(jsonText, e.byte);
+        const size_t colon = lc.find(':');
+        throw SceneError(path + ":" + lc + ": invalid JSON at line " + lc.substr(0, colon) +
+                         ", column " + lc.substr(colon + 1) + ": " + parseDetail(e.what()));
+    } catch (const json::exception& e) {  // e.g. a number too large for a double
+        throw SceneError(path + ": invalid JSON: " + parseDetail(e.what()));
+    }
+
+    const Reader R(path);
+    const Node r{&root, ""};
+    R.object(r, {"description", "camera", "cameras", "lights", "objects", "shadow", "ambient",
+                 "background", "expect"},
+             "a scene");
+    Scene s;
+    s.path = path;
+    s.name = std::filesystem::path(path).stem().string();
+    if (auto v = r["description"]) s.description = R.string(v);
+
+    // Cameras: "camera" (one, named "main") or "cameras" (named; the first is the main one).
+    if (r["camera"] && r["cameras"])
+        R.fail(r["cameras"], "nothing when \"camera\" is given (use one or the other)");
+    if (auto v = r["cameras"]) {
+        const size_t count = R.array(v, 1, "a non-empty array of cameras");
+        std::set<std::string> names;
+        for (size_t i = 0; i < count; ++i) {
+            s.cameras.push_back(readCamera(R, v[i], true));
+            if (!names.insert(s.cameras.back().name).second)
+                R.fail(v[i]["name"], "a camera name not used before");
+        }
+    } else {
+        if (!r["camera"])
+            R.fail(r["camera"], "an object (the camera), or \"cameras\": an array of them");
+        s.cameras.push_back(readCamera(R, r["camera"], false));
+    }
+
+    if (auto v = r["lights"]) {
+        const size_t count = R.array(v, 0, "an array of lights (it may be empty)");
+        for (size_t i = 0; i < count; ++i) s.lights.push_back(readLight(R, v[i]));
+    }
+    const Node objects = r["objects"];
+    const size_t count = R.array(objects, 1, "a non-empty array of objects");
+    for (size_t i = 0; i < count; ++i) s.objects.push_back(readObject(R, objects[i], i));
+
+    if (auto v = r["shadow"]) s.shadow = readShadow(R, v);
+    if (auto v = r["ambient"]) s.ambient = R.vec3(v, Range::atLeast(0));
+    if (auto v = r["background"]) s.background = R.vec3(v, Range::atLeast(0));
+
+    if (auto e = r["expect"]) {
+        R.object(e, {"probes"}, "the expectations");
+        const Node probes = e["probes"];
+        const size_t n = R.array(probes, 0, "an array of probes");
+        for (size_t i = 0; i < n; ++i) s.probes.push_back(readProbe(R, probes[i], s.cameras));
+    }
+    return s;
+}
+
+Scene loadScene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw SceneError(path + ": expected a readable scene file, found " +
+                         (errno ? std::string(std::strerror(errno)) : std::string("nothing")));
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseScene(text.str(), path);
+}
+
+// Switches, not the tables above: these may be called during other files' static setup.
+const char* toString(LightType t) {
+    switch (t) {
+        case LightType::Spot: return "spot";
+        case LightType::Directional: return "directional";
+    }
+    return "?";
+}
+const char* toString(ShapeType t) {
+    switch (t) {
+        case ShapeType::Plane: return "plane";
+        case ShapeType::Box: return "box";
+        case ShapeType::Sphere: return "sphere";
+        case ShapeType::Cylinder: return "cylinder";
+        case ShapeType::Torus: return "torus";
+        case ShapeType::Mesh: return "mesh";
+    }
+    return "?";
+}
+const char* toString(FilterKind f) {
+    switch (f) {
+        case FilterKind::None: return "none";
+        case FilterKind::Gaussian: return "gaussian";
+        case FilterKind::Sat: return "sat";
+    }
+    return "?";
+}
+const char* toString(Technique t) {
+    switch (t) {
+        case Technique::Msm4: return "msm4";
+    }
+    return "?";
+}
+
+}  // namespace sl

@@ -1,0 +1,89 @@
+// lighting.frag: shades the camera's view. Each light adds (1 - G)·(diffuse + specular) to
+// the ambient term, where G is the shadow intensity of the technique compiled in:
+//   SL_TECHNIQUE_MSM4  Hamburger 4MSM from filtered moments (student: msm.glsl)
+//   SL_FILTER_SAT      the moments come from a summed-area table (student: sat_lookup.glsl)
+// Other techniques are further permutations of this one file, not copies of it.
+#include "moments.glsl"  // relativeDepth
+
+uniform float uMomentBias;  // α, handed to msm.glsl
+#include "msm.glsl"
+#ifdef SL_FILTER_SAT
+#include "sat_lookup.glsl"
+#endif
+
+#define SL_MAX_LIGHTS 4
+
+in vec3 vWorldPosition;
+in vec3 vWorldNormal;
+
+uniform vec3 uCameraPosition;
+uniform vec3 uAmbient;
+uniform vec3 uAlbedo;
+uniform float uSpecular;
+uniform float uShininess;
+
+uniform int uLightCount;
+uniform vec3 uLightEye[SL_MAX_LIGHTS];       // spot: position; directional: frustum eye
+uniform vec3 uLightForward[SL_MAX_LIGHTS];
+uniform vec3 uLightColor[SL_MAX_LIGHTS];     // colour × intensity
+uniform int uLightIsSpot[SL_MAX_LIGHTS];
+uniform float uLightCosHalfCone[SL_MAX_LIGHTS];
+uniform int uLightShadowMap[SL_MAX_LIGHTS];  // index into uShadowMaps, -1: casts no shadow
+uniform mat4 uLightViewProjection[SL_MAX_LIGHTS];
+uniform vec2 uLightDepthRange[SL_MAX_LIGHTS];
+uniform sampler2D uShadowMaps[SL_MAX_LIGHTS];  // filtered moments, or their SAT
+uniform float uDepthBias;   // subtracted from the fragment's relative depth (acne)
+uniform float uSatKernel;   // box size in texels (SL_FILTER_SAT)
+
+layout(location = 0) out vec4 outColor;
+layout(location = 1) out float outShadow;  // G of the first shadowing light
+
+// G for light i at world position p; 0 outside the light's shadow frustum.
+float shadowIntensity(int i, vec3 p) {
+    vec4 clip = uLightViewProjection[i] * vec4(p, 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
+    vec2 uv = ndc.xy * 0.5 + 0.5;
+    float lightDepth = dot(p - uLightEye[i], uLightForward[i]);
+    float zf = relativeDepth(lightDepth, uLightDepthRange[i]) - uDepthBias;
+    int map = uLightShadowMap[i];
+#ifdef SL_FILTER_SAT
+    vec2 size = vec2(textureSize(uShadowMaps[map], 0));
+    vec4 b = satBoxAverage(uShadowMaps[map], uv * size, vec2(uSatKernel));
+#else
+    vec4 b = texture(uShadowMaps[map], uv);  // bilinear: filtering moments is linear
+#endif
+    return momentShadowIntensity(b, zf);
+}
+
+void main() {
+    vec3 n = normalize(vWorldNormal);
+    vec3 v = normalize(uCameraPosition - vWorldPosition);
+    if (dot(n, v) < 0.0) n = -n;  // planes are seen from both sides
+    vec3 color = uAmbient * uAlbedo;
+    float firstShadow = 0.0;
+    bool firstSeen = false;
+    bool broken = false;
+    for (int i = 0; i < uLightCount; ++i) {
+        vec3 l = uLightIsSpot[i] != 0 ? normalize(uLightEye[i] - vWorldPosition)
+                                      : -uLightForward[i];
+        float cone = 1.0;
+        if (uLightIsSpot[i] != 0) {
+            float c = dot(-l, uLightForward[i]);
+            cone = smoothstep(uLightCosHalfCone[i], mix(uLightCosHalfCone[i], 1.0, 0.1), c);
+        }
+        float G = 0.0;
+        if (uLightShadowMap[i] >= 0) {
+            G = shadowIntensity(i, vWorldPosition);
+            if (!firstSeen) { firstShadow = G; firstSeen = true; }
+            // Out of [0, 1] or NaN (the stub returns -1): show it, do not hide it by clamping.
+            if (!(G >= 0.0 && G <= 1.0)) broken = true;
+        }
+        vec3 h = normalize(l + v);
+        float diffuse = max(dot(n, l), 0.0);
+        float specular = diffuse > 0.0 ? uSpecular * pow(max(dot(n, h), 0.0), uShininess) : 0.0;
+        color += (1.0 - G) * cone * uLightColor[i] * (diffuse * uAlbedo + specular);
+    }
+    outColor = broken ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(color, 1.0);
+    outShadow = firstShadow;
+}

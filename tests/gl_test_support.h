@@ -1,0 +1,68 @@
+// gl_test_support: what the GPU tests share — one GL context per test process, the repo's
+// folders, rendering a scene through a solution, and running the shadowlab binary.
+#pragma once
+
+#include "gl_context.h"
+#include "pass_plan.h"
+#include "paths.h"
+#include "renderer.h"
+#include "scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace sl::test {
+
+inline GlContext& sharedContext() {
+    static std::unique_ptr<GlContext> context = createContext(BackendKind::Auto);
+    context->activate();  // another test may have made its own context current
+    return *context;
+}
+
+inline fs::path root() { return repoRoot(); }
+inline fs::path scenePath(const std::string& name) { return root() / "scenes" / (name + ".json"); }
+
+inline ShaderLibrary library(const std::string& solution) {
+    return ShaderLibrary::forSolution(resolveSolution(solution), root());
+}
+
+inline RenderResult renderScene(const Scene& scene, const std::string& solution = "reference") {
+    sharedContext();
+    Renderer renderer(library(solution));
+    return renderer.render(scene, planPasses(scene));
+}
+
+// A fresh, empty folder for one test's files.
+inline fs::path tempDir(const std::string& name) {
+    const char* base = std::getenv("SHADOWLAB_TEST_TMP");
+    fs::path dir = fs::path(base ? base : "/tmp/shadowlab-tests") / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string output;  // stdout and stderr together
+};
+
+// Runs `command` through the shell (the tests' own fixed command lines only).
+inline CommandResult runCommand(const std::string& command) {
+    CommandResult r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    char buf[4096];
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.output.append(buf, n);
+    int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+inline std::string shadowlabBinary() { return SHADOWLAB_BINARY; }
+
+}  // namespace sl::test

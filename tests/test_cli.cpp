@@ -1,0 +1,69 @@
+// The command line: outputs and sidecar of `render`, and clear errors for bad input.
+#include "gl_test_support.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace sl {
+
+TEST(Cli, RenderWritesImagesPreviewsAndSidecar) {
+    fs::path out = test::tempDir("cli_render");
+    auto r = test::runCommand(test::shadowlabBinary() + " render --explain --scene " +
+                              test::scenePath("contact").string() + " --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* f : {"final.exr", "final.png", "shadow.exr", "shadow.png", "moments_raw.exr",
+                          "moments_raw.png", "moments_filtered.exr", "moments_filtered.png",
+                          "sat.exr", "render.json"})
+        EXPECT_TRUE(fs::exists(out / f)) << f;
+    EXPECT_NE(r.output.find("sat-rows"), std::string::npos) << r.output;  // --explain
+    EXPECT_NE(r.output.find(" ms"), std::string::npos) << r.output;
+    auto sidecar = nlohmann::json::parse(std::ifstream(out / "render.json"));
+    EXPECT_EQ(sidecar["solution"], "reference");
+    EXPECT_FALSE(sidecar["mesaVersion"].get<std::string>().empty());
+    EXPECT_NE(sidecar["renderer"].get<std::string>().find("llvmpipe"), std::string::npos);
+    EXPECT_EQ(sidecar["sha256"]["final.exr"].get<std::string>().size(), 64u);
+    EXPECT_EQ(sidecar["passes"].size(), 5u);  // shadow, 2 scans, resolve, lighting
+}
+
+TEST(Cli, MalformedSceneNamesFileKeyAndExpectation) {
+    fs::path dir = test::tempDir("cli_bad_scene");
+    std::ofstream(dir / "bad.json")
+        << R"({"camera": {"position": [0,1,5], "target": [0,0,0]}, "lights": [],
+              "objects": [{"shape": "sphere", "radius": "big"}]})";
+    auto r = test::runCommand(test::shadowlabBinary() + " render --scene " +
+                              (dir / "bad.json").string() + " --out " + (dir / "out").string());
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("bad.json"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("/objects/0/radius"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("expected"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BrokenStudentShaderReportsFileLineAndExitCode) {
+    fs::path dir = test::tempDir("cli_broken_shader");
+    for (const auto& name : stageFileNames())
+        fs::copy_file(test::root() / "reference" / name, dir / name);
+    std::ofstream(dir / "moments.glsl") << "float relativeDepth(float d, vec2 r) { return d }\n";
+    auto r = test::runCommand(test::shadowlabBinary() + " render --scene " +
+                              test::scenePath("classic").string() + " --solution " + dir.string() +
+                              " --out " + (dir / "out").string());
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("moments.glsl:1:"), std::string::npos) << r.output;
+}
+
+TEST(Cli, UnknownSolutionFolderIsNamed) {
+    auto r = test::runCommand(test::shadowlabBinary() + " render --scene " +
+                              test::scenePath("classic").string() + " --solution /nonexistent/x");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("/nonexistent/x"), std::string::npos) << r.output;
+}
+
+TEST(Cli, BenchRunsAndReportsRatios) {
+    auto r = test::runCommand(test::shadowlabBinary() + " bench --size 64 --repeats 3");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("| copy |"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("gaussian r=8, y"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("sat, rows + columns"), std::string::npos) << r.output;
+}
+
+}  // namespace sl

@@ -1,0 +1,121 @@
+// Shader loading: #include lookup order, and errors that name the student's file and line.
+#include "gl_program.h"
+#include "gl_test_support.h"
+
+#include <fstream>
+
+namespace sl {
+namespace {
+
+void write(const fs::path& path, const std::string& text) {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path) << text;
+}
+
+// A solution folder with the reference's files, where `file` is replaced by `text`.
+fs::path solutionWith(const std::string& testName, const std::string& file,
+                      const std::string& text) {
+    fs::path dir = test::tempDir(testName);
+    for (const auto& name : stageFileNames())
+        fs::copy_file(test::root() / "reference" / name, dir / name);
+    write(dir / file, text);
+    return dir;
+}
+
+std::string compileError(const ShaderLibrary& lib, const std::string& vs, const std::string& fs) {
+    try {
+        GlProgram::graphics(lib, vs, fs, {"SL_TECHNIQUE_MSM4"});
+    } catch (const ShaderError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(ShaderSource, CompileErrorNamesStudentFileAndLine) {
+    test::sharedContext();
+    const std::string msm =
+        "// line 1\n// line 2\nfloat momentShadowIntensity(vec4 b, float zf) {\n"
+        "    float x = 1.0\n"  // line 4: missing semicolon, reported on line 5
+        "    return undefinedThing;\n}\n";
+    fs::path dir = solutionWith("compile_error", "msm.glsl", msm);
+    std::string err =
+        compileError(ShaderLibrary::forSolution(dir, test::root()), "scene.vert", "lighting.frag");
+    ASSERT_FALSE(err.empty());
+    const std::string file = (fs::weakly_canonical(dir) / "msm.glsl").generic_string();
+    EXPECT_EQ(err.rfind(file + ":5:", 0), 0u) << err;  // the first line blames msm.glsl:5
+    EXPECT_NE(err.find("--- driver log"), std::string::npos) << err;  // the full log follows
+    EXPECT_NE(err.find("0:5("), std::string::npos) << err;
+}
+
+TEST(ShaderSource, ErrorsInsideAnIncludeAndAfterItMapToTheirOwnFiles) {
+    test::sharedContext();
+    fs::path dir = test::tempDir("include_lines");
+    for (const auto& name : stageFileNames())
+        fs::copy_file(test::root() / "reference" / name, dir / name);
+    write(dir / "helper.glsl", "// helper line 1\nfloat helper() { return 1.0 }\n");  // line 2
+    write(dir / "msm.glsl",
+          "#include \"helper.glsl\"\n"
+          "float momentShadowIntensity(vec4 b, float zf) { return helper(); }\n"
+          "float broken() { return nope; }\n");  // line 3
+    std::string err = compileError(ShaderLibrary::forSolution(dir, test::root()), "scene.vert",
+                                   "lighting.frag");
+    const std::string base = fs::weakly_canonical(dir).generic_string();
+    EXPECT_NE(err.find(base + "/helper.glsl:2:"), std::string::npos) << err;
+    // The helper error stops Mesa's parser; check the line after an include separately.
+    write(dir / "helper.glsl", "float helper() { return 1.0; }\n");
+    err = compileError(ShaderLibrary::forSolution(dir, test::root()), "scene.vert",
+                       "lighting.frag");
+    EXPECT_NE(err.find(base + "/msm.glsl:3:"), std::string::npos) << err;
+}
+
+TEST(ShaderSource, StageFilesComeFromTheirFolderOthersFromSolutionThenShaders) {
+    fs::path a = test::tempDir("lookup_a"), b = test::tempDir("lookup_b");
+    write(a / "msm.glsl", "");
+    write(a / "common.glsl", "");
+    write(b / "common.glsl", "");
+    write(b / "only_b.glsl", "");
+    ShaderLibrary lib({{"msm.glsl", a}}, {b}, test::root());
+    EXPECT_EQ(lib.resolve("msm.glsl"), a / "msm.glsl");
+    EXPECT_EQ(lib.resolve("common.glsl"), a / "common.glsl");  // solution first
+    EXPECT_EQ(lib.resolve("only_b.glsl"), b / "only_b.glsl");
+    EXPECT_THROW(lib.resolve("absent.glsl"), ShaderError);
+}
+
+TEST(ShaderSource, MissingStageFileSaysNotSubmitted) {
+    fs::path empty = test::tempDir("missing_stage");
+    ShaderLibrary lib = ShaderLibrary::forSolution(empty, test::root());
+    try {
+        lib.resolve("msm.glsl");
+        FAIL() << "no error";
+    } catch (const ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("not submitted"), std::string::npos);
+    }
+}
+
+TEST(ShaderSource, IncludeCycleIsAnError) {
+    fs::path dir = test::tempDir("cycle");
+    write(dir / "a.glsl", "#include \"b.glsl\"\n");
+    write(dir / "b.glsl", "#include \"a.glsl\"\n");
+    ShaderLibrary lib({}, {dir}, test::root());
+    try {
+        lib.assemble("a.glsl", {});
+        FAIL() << "no error";
+    } catch (const ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("#include cycle"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ShaderSource, VersionLineIsOwnedByTheFrameworkAndLinesAreKept) {
+    fs::path dir = test::tempDir("version");
+    write(dir / "x.glsl", "#version 330\nfloat f;\n");
+    ShaderLibrary lib({}, {dir}, test::root());
+    AssembledShader s = lib.assemble("x.glsl", {"SL_A", "SL_B=2"});
+    EXPECT_EQ(s.text.rfind("#version 450 core\n#define SL_A\n#define SL_B 2\n#line 1 0\n\n", 0),
+              0u)
+        << s.text;
+    EXPECT_EQ(s.mapLog("0:2(7): error: oops\n"), lib.displayPath(dir / "x.glsl") + ":2:7: error: oops\n");
+}
+
+}  // namespace sl
