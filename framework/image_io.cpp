@@ -21,8 +21,10 @@ std::vector<float> flipRows(const Image& img) {
     return out;
 }
 
-void writeWith(const fs::path& path, const OIIO::ImageSpec& spec, const void* data,
+void writeWith(const fs::path& path, OIIO::ImageSpec spec, const void* data,
                OIIO::TypeDesc type) {
+    // OIIO stamps the current time unless DateTime is set; empty keeps files reproducible.
+    spec.attribute("DateTime", "");
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
     if (!out->open(path.string(), spec) || !out->write_image(type, data))

@@ -5,17 +5,13 @@
 // Unknown keys are errors (they are almost always typos), and so is invalid JSON, reported
 // as "<file>:<line>:<column>: invalid JSON ...".
 #include "scene.h"
-
-#include <nlohmann/json.hpp>
+#include "scene_json.h"
 
 #include <algorithm>
 #include <cerrno>
-#include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -23,138 +19,7 @@
 namespace sl {
 namespace {
 
-using json = nlohmann::json;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-std::string formatNumber(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-// The value as it appears in the file, shortened so that a whole object stays one line.
-std::string dumpShort(const json& v) {
-    std::string s = v.dump();
-    return s.size() > 72 ? s.substr(0, 69) + "..." : s;
-}
-
-std::string quotedList(const std::vector<std::string>& items) {
-    std::string out;
-    for (size_t i = 0; i < items.size(); ++i) out += (i ? ", \"" : "\"") + items[i] + "\"";
-    return out;
-}
-
-// An allowed interval of numbers; describes itself for the "expected ..." part of a message.
-struct Range {
-    double lo = -kInf, hi = kInf;
-    bool loOpen = false, hiOpen = false;
-
-    static Range any() { return {}; }
-    static Range positive() { return {0.0, kInf, true, false}; }
-    static Range atLeast(double lo) { return {lo, kInf, false, false}; }
-    static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
-    static Range open(double lo, double hi) { return {lo, hi, true, true}; }
-
-    bool contains(double v) const {
-        return std::isfinite(v) && (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
-    }
-    std::string describe(bool integer) const {
-        std::string kind = integer ? "an integer" : "a number";
-        if (lo == -kInf && hi == kInf) return kind;
-        if (hi == kInf) return kind + (loOpen ? " > " : " >= ") + formatNumber(lo);
-        if (lo == -kInf) return kind + (hiOpen ? " < " : " <= ") + formatNumber(hi);
-        return kind + " in " + (loOpen ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) +
-               (hiOpen ? ")" : "]");
-    }
-};
-
-// A value in the document and its JSON pointer; `v` is null when the key is absent, so that
-// "missing" and "wrong" go through the same checks ("found nothing").
-struct Node {
-    const json* v = nullptr;
-    std::string ptr;
-
-    explicit operator bool() const { return v != nullptr; }
-    Node operator[](const std::string& key) const {
-        std::string escaped;  // RFC 6901: '~' -> "~0", '/' -> "~1"
-        for (char c : key) escaped += c == '~' ? "~0" : c == '/' ? "~1" : std::string(1, c);
-        const json* child = nullptr;
-        if (v && v->is_object()) {
-            auto it = v->find(key);
-            if (it != v->end()) child = &*it;
-        }
-        return {child, ptr + "/" + escaped};
-    }
-    Node operator[](size_t i) const {
-        return {v && v->is_array() && i < v->size() ? &(*v)[i] : nullptr,
-                ptr + "/" + std::to_string(i)};
-    }
-};
-
-class Reader {
-public:
-    explicit Reader(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const Node& n, const std::string& expected) const {
-        fail(n.ptr, expected, n ? dumpShort(*n.v) : "nothing");
-    }
-    [[noreturn]] void fail(const std::string& ptr, const std::string& expected,
-                           const std::string& found) const {
-        throw SceneError(file_ + ": " + (ptr.empty() ? "/" : ptr) + ": expected " + expected +
-                         ", found " + found);
-    }
-
-    // An object whose keys are all in `allowed`; `what` names it ("a light", "a sphere").
-    void object(const Node& n, const std::vector<std::string>& allowed,
-                const std::string& what) const {
-        if (!n || !n.v->is_object()) fail(n, "an object (" + what + ")");
-        for (const auto& item : n.v->items())
-            if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())
-                fail(n[item.key()].ptr, "one of the keys " + quotedList(allowed) + " for " + what,
-                     "unknown key \"" + item.key() + "\"");
-    }
-    size_t array(const Node& n, size_t minSize, const std::string& what) const {
-        if (!n || !n.v->is_array() || n.v->size() < minSize) fail(n, what);
-        return n.v->size();
-    }
-    double number(const Node& n, const Range& r) const {
-        if (!n || !n.v->is_number() || !r.contains(n.v->get<double>())) fail(n, r.describe(false));
-        return n.v->get<double>();
-    }
-    int integer(const Node& n, const Range& r) const {
-        if (!n || !n.v->is_number_integer() || !r.contains(n.v->get<double>()))
-            fail(n, r.describe(true));
-        return n.v->get<int>();
-    }
-    glm::vec3 vec3(const Node& n, const Range& r) const {
-        std::string what = "an array of 3 numbers";
-        if (r.lo != -kInf || r.hi != kInf) what += " (each " + r.describe(false) + ")";
-        if (!n || !n.v->is_array() || n.v->size() != 3) fail(n, what);
-        return {float(number(n[0], r)), float(number(n[1], r)), float(number(n[2], r))};
-    }
-    std::string string(const Node& n, bool nonEmpty = false) const {
-        if (!n || !n.v->is_string() || (nonEmpty && n.v->get<std::string>().empty()))
-            fail(n, nonEmpty ? "a non-empty string" : "a string");
-        return n.v->get<std::string>();
-    }
-    bool boolean(const Node& n) const {
-        if (!n || !n.v->is_boolean()) fail(n, "true or false");
-        return n.v->get<bool>();
-    }
-    // One of a fixed set of strings; returns its index.
-    int choice(const Node& n, const std::vector<std::string>& options) const {
-        if (n && n.v->is_string()) {
-            auto it = std::find(options.begin(), options.end(), n.v->get<std::string>());
-            if (it != options.end()) return int(it - options.begin());
-        }
-        fail(n, "one of " + quotedList(options));
-    }
-
-    const std::string& file() const { return file_; }
-
-private:
-    std::string file_;
-};
+using namespace scene_json;
 
 // The names the file uses for the enums, in the order of their values.
 const std::vector<std::string> kLightTypes = {"spot", "directional"};
@@ -251,8 +116,10 @@ Object readObject(const Reader& R, const Node& n, size_t index) {
             break;
         case ShapeType::Torus:
             o.majorRadius = float(R.number(n["majorRadius"], Range::positive()));
-            o.minorRadius = float(
-                R.number(n["minorRadius"], Range{0.0, double(o.majorRadius), true, true}));
+            o.minorRadius = float(R.number(n["minorRadius"], Range::positive()));
+            if (o.minorRadius >= o.majorRadius)
+                R.fail(n["minorRadius"], "a number < majorRadius (" +
+                                             formatNumber(o.majorRadius) + ")");
             break;
         case ShapeType::Mesh: {
             const Node p = n["path"];
@@ -302,7 +169,8 @@ void readFilter(const Reader& R, const Node& n, ShadowEffect& fx) {
     }
 }
 
-ShadowEffect readShadow(const Reader& R, const Node& n) {
+// `perspective`: a spot light casts shadows, whose projection needs an explicit near > 0.
+ShadowEffect readShadow(const Reader& R, const Node& n, bool perspective) {
     R.object(n, {"technique", "mapSize", "depthRange", "filter", "momentBias", "depthBias"},
              "the shadow effect");
     ShadowEffect fx;
@@ -318,7 +186,8 @@ ShadowEffect readShadow(const Reader& R, const Node& n) {
             fx.depthRange.reset();
         } else {
             if (!v.v->is_array() || v.v->size() != 2) R.fail(v, what);
-            const double nearD = R.number(v[0], Range::atLeast(0));
+            const double nearD =
+                perspective ? R.number(v[0], Range::positive()) : R.number(v[0], Range::atLeast(0));
             const double farD = R.number(v[1], Range{nearD, kInf, true, false});
             fx.depthRange = glm::vec2(float(nearD), float(farD));
         }
@@ -360,10 +229,14 @@ std::string lineColumn(const std::string& text, size_t byte) {
     return std::to_string(line) + ":" + std::to_string(at - lineStart + 1);
 }
 
-// nlohmann's message without its "[json.exception...] parse error at line L, column C: " prefix.
-std::string parseDetail(const std::string& what) {
+// nlohmann's message without its "[json.exception.parse_error.101] " tag, nor the
+// "parse error at line L, column C: " that we compute ourselves.
+std::string parseDetail(std::string what) {
+    const size_t tag = what.find("] ");
+    if (what.rfind("[json.exception", 0) == 0 && tag != std::string::npos) what.erase(0, tag + 2);
     const size_t colon = what.find(": ");
-    return colon == std::string::npos ? what : what.substr(colon + 2);
+    if (what.rfind("parse error", 0) == 0 && colon != std::string::npos) what.erase(0, colon + 2);
+    return what;
 }
 
 }  // namespace
@@ -416,7 +289,10 @@ Scene parseScene(const std::string& jsonText, const std::string& path) {
     const size_t count = R.array(objects, 1, "a non-empty array of objects");
     for (size_t i = 0; i < count; ++i) s.objects.push_back(readObject(R, objects[i], i));
 
-    if (auto v = r["shadow"]) s.shadow = readShadow(R, v);
+    const bool spot = std::any_of(s.lights.begin(), s.lights.end(), [](const Light& l) {
+        return l.castsShadows && l.type == LightType::Spot;
+    });
+    if (auto v = r["shadow"]) s.shadow = readShadow(R, v, spot);
     if (auto v = r["ambient"]) s.ambient = R.vec3(v, Range::atLeast(0));
     if (auto v = r["background"]) s.background = R.vec3(v, Range::atLeast(0));
 
@@ -432,8 +308,8 @@ Scene parseScene(const std::string& jsonText, const std::string& path) {
 Scene loadScene(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw SceneError(path + ": expected a readable scene file, found " +
-                         (errno ? std::string(std::strerror(errno)) : std::string("nothing")));
+        throw SceneError(path + ": expected a readable scene file, found nothing (" +
+                         std::string(errno ? std::strerror(errno) : "cannot open it") + ")");
     std::ostringstream text;
     text << in.rdbuf();
     return parseScene(text.str(), path);

@@ -46,12 +46,13 @@ float momentShadowIntensity(vec4 b, float zf)
     //    (0.5·0^j + 0.5·1^j). Filtered moments often sit on (or, after float32 rounding,
     //    just outside) the boundary of the moment space: a single depth, or two, make the
     //    Hankel matrix B singular, and then the rounding errors decide the sign of its
-    //    pivots. Mixing in α of a distribution that is spread over the whole depth range
-    //    adds α·B0 with B0 = ½·v(0)v(0)ᵀ + ½·v(1)v(1)ᵀ, v(z) = (1, z, z²), to B. That makes
-    //    B' positive definite unless all the depth lies at exactly 0 and 1 (B0's kernel is
-    //    the polynomial z·(z - 1)), and it lifts the variance pivot to D22 >= α/4, well
-    //    above the ~1e-7 rounding noise of float32 moments. The price is a little light
-    //    leaking through (about α/2 of G): a larger α is more robust and less accurate.
+    //    pivots. Mixing in α of a distribution that spans the whole depth range gives
+    //    B' = (1 - α)·B + α·B0 with B0 = ½·v(0)v(0)ᵀ + ½·v(1)v(1)ᵀ, v(z) = (1, z, z²).
+    //    B' is positive definite unless all the depth lies at exactly 0 and 1 (B0's kernel
+    //    is the polynomial z·(z - 1)), and its variance pivot is D22 >= α/4, well above the
+    //    ~1e-7 rounding noise of float32 moments. The price: G is off by about α/2 even for
+    //    a single depth, and the bound leaks a little more light near occluders. A larger
+    //    α is more robust and less accurate.
     b = mix(b, vec4(0.5), uMomentBias);
 
     // 2. LDLᵀ (square-root-free Cholesky) factorisation of the Hankel matrix
@@ -59,7 +60,7 @@ float momentShadowIntensity(vec4 b, float zf)
     //            | b1  b2  b3 |            | b1  1    0 |
     //            | b2  b3  b4 |            | b2  L32  1 |
     //    D22 = b2 - b1² is the variance of the depth. D33 = b4 - b2² - L32²·D22 is the mean
-    //    square of the best-fitting monic quadratic: it vanishes when the depth takes only
+    //    square of the best-fitting monic quadratic: it vanishes when the depth takes at most
     //    two values, e.g. a texel that sees nothing but the far plane (b = (1,1,1,1): after
     //    the bias all of its mass is at 0 and 1). Both pivots are floored before dividing.
     float D22 = max(b.y - b.x * b.x, kMinD22);

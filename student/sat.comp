@@ -1,0 +1,62 @@
+// sat.comp: one pass of a summed-area table: inclusive prefix sums along rows or columns.
+// Stage contract: docs/stage_contract.md (the part that concerns this file is repeated here).
+//
+// Filter pass, compute shader. Do not write a #version line: the framework prepends
+// `#version 450 core`. Dispatched twice: along rows (uDirection = (1, 0)), then along the
+// columns of the result (uDirection = (0, 1)).
+//
+// Inputs and outputs:
+//   uSource       (image binding 0, RGBA32F, read only)   the moments, or the row sums
+//   uDestination  (image binding 1, RGBA32F, write only)  same size as uSource
+//   uDirection    (1, 0): prefix sums along rows; (0, 1): along columns
+//   uImageSize    width, height of both images (any size, each side 1 .. 4096)
+// Writes the inclusive prefix sum along each line: dst(i) = Σ_{k <= i} src(k). After both
+// passes dst(x, y) = Σ_{i <= x, j <= y} moments(i, j), a summed-area table.
+// You may store the table with an offset subtracted (a precision fix), as long as your
+// sat_lookup.glsl undoes it: the pair is graded together on the box averages it returns.
+//
+// Invocation mapping: the framework dispatches 1 × ceil(lineCount / local_size_y) work
+// groups, reading the local size you declare. Work group k owns lines k·local_size_y …
+// (local_size_y of them) along their whole length; how its invocations share them is
+// yours. The simplest plan: the local_size_x invocations of a group share one line and
+// gl_GlobalInvocationID.y is the line index. A line is a row when uDirection = (1, 0) and a
+// column when uDirection = (0, 1). The work must be O(n) per line. Lines past the image must
+// not be written.
+//
+// Stub value: until implemented, the pass writes -1 to every texel, which the framework
+// reports as "not implemented yet" and previews in magenta. A correct solution never writes
+// a negative value.
+
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+
+layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
+layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
+uniform ivec2 uDirection;  // (1, 0): prefix sums along rows; (0, 1): along columns
+uniform ivec2 uImageSize;
+
+void main()
+{
+    bool alongRows  = uDirection.x != 0;
+    int  lineLength = alongRows ? uImageSize.x : uImageSize.y;
+    int  lineCount  = alongRows ? uImageSize.y : uImageSize.x;
+    int  line       = int(gl_GlobalInvocationID.y);
+    int  t          = int(gl_LocalInvocationID.x);
+
+    // TODO: not implemented yet: sat.comp (prefix sums along a line)
+    // A work-efficient plan for the local_size_x invocations of a line:
+    //  1. split the line into local_size_x contiguous chunks; each invocation sums its chunk;
+    //  2. share the chunk totals through a `shared` array, barrier(), and give every chunk
+    //     its offset: the sum of the totals of the chunks before it;
+    //  3. each invocation walks its chunk again, writing offset + running sum.
+    // barrier() must be reached by every invocation of the work group: do not return early
+    // or branch around it. Make sure any line length works (1, 7, 1000, 4096, ...).
+    // Sums grow to ~width·height: think about float32 precision (see the handout).
+
+    // Stub: every texel of this line gets the stub value -1.
+    if (line >= lineCount)
+        return;
+    for (int i = t; i < lineLength; i += int(gl_WorkGroupSize.x)) {
+        ivec2 texel = alongRows ? ivec2(i, line) : ivec2(line, i);
+        imageStore(uDestination, texel, vec4(-1.0));
+    }
+}

@@ -1,0 +1,39 @@
+// sat_lookup.glsl: box average of the moment map from its summed-area table.
+// Stage contract: docs/stage_contract.md (the part that concerns this file is repeated here).
+//
+// Included by the lighting pass and by shaders/sat_resolve.comp when the filter is a
+// summed-area table (SAT). Do not write a #version line: the framework prepends
+// `#version 450 core`.
+//
+// vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
+//   sat      the table written by your sat.comp: S(i, j) = sum of the moments of all texels
+//            (x, y) with x <= i and y <= j. Bound with nearest filtering: read it with
+//            texelFetch(sat, ivec2(i, j), 0). textureSize(sat, 0) is the map's size.
+//   center   centre of the box in texel units (texel i covers [i, i + 1)).
+//   boxSize  its width and height in texels; fractional sizes are allowed (>= 1).
+//   returns  the mean of the moment map over the box clipped to the map, partially covered
+//            texels weighted by the fraction of them that the box covers.
+//            With S(-1) = 0, the sum of all texels left of a box edge at position e is S
+//            linearly interpolated at index e - 1.
+//
+// If your sat.comp stores the table with an offset subtracted (a precision fix), undo it
+// here: the two files are graded together, on the box averages this function returns.
+//
+// Stub value: until implemented, the function returns -1 in every channel, which the
+// framework reports as "not implemented yet" and previews in magenta. A correct solution
+// never returns a negative moment.
+
+vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
+{
+    // TODO: not implemented yet: satBoxAverage
+    //  1. The box is [center - boxSize / 2, center + boxSize / 2]; clip it to [0, size].
+    //  2. Write a helper that returns the sum of the map over [0, e.x] × [0, e.y]: S at the
+    //     (fractional) index e - 1, interpolated bilinearly between the four table entries
+    //     around it, where entries at index -1 are 0 (do not texelFetch outside the table).
+    //     Interpolate by hand with texelFetch: hardware linear filtering computes its
+    //     weights with only about 8 bits, far too few for sums this large.
+    //  3. The box sum is the inclusion-exclusion of the four corner sums:
+    //         S(x1, y1) - S(x0, y1) - S(x1, y0) + S(x0, y0).
+    //  4. Divide by the clipped area (and decide what a box with no area returns).
+    return vec4(-1.0);
+}
