@@ -1,0 +1,23 @@
+// cli_commands: how the shadowlab subcommands register themselves. Each file under cli/ (and
+// grader/cli_*.cpp) adds its subcommands; main.cpp parses and maps errors to exit codes.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace sl::cli {
+
+enum ExitCode { Ok = 0, Failed = 1, BadInput = 2, ShaderFailed = 3, NoBackend = 4 };
+
+// Shared by all subcommands; a subcommand's callback sets exitCode.
+struct Context {
+    std::string backend = "auto";
+    int exitCode = Ok;
+};
+
+void addRenderCommands(CLI::App& app, Context& ctx);  // render, bench, info
+void addProbeCommand(CLI::App& app, Context& ctx);    // probe (cli_probe.cpp)
+void addGraderCommands(CLI::App& app, Context& ctx);  // grade, golden, package (grader/)
+
+}  // namespace sl::cli
