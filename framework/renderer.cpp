@@ -109,12 +109,16 @@ bool isStubTexel(const Image& img, int x, int y) {
     return true;
 }
 
-// True if `out` holds the stub value -1 at a texel where `in` (same size) does not.
-bool stubOutput(const Image& out, const Image* in) {
+// True if `out` holds the stub value -1 at a texel where `in` (same size) does not; with
+// `everywhere`, true if every texel of `out` holds it.
+bool stubOutput(const Image& out, const Image* in, bool everywhere = false) {
     for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x)
-            if (isStubTexel(out, x, y) && !(in && isStubTexel(*in, x, y))) return true;
-    return false;
+        for (int x = 0; x < out.width; ++x) {
+            const bool stub = isStubTexel(out, x, y);
+            if (everywhere && !stub) return false;
+            if (!everywhere && stub && !(in && isStubTexel(*in, x, y))) return true;
+        }
+    return everywhere;
 }
 
 }  // namespace
@@ -392,7 +396,9 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan) {
                                                       return p.kind == PassKind::SatResolve;
                                                   })) {
                 Image filtered = m.filtered.read();
-                if (stubOutput(filtered, &sat)) note("sat_lookup.glsl", "satBoxAverage");
+                // A stub table makes a correct lookup return ~0, never -1 everywhere.
+                if (stubOutput(filtered, &sat) || stubOutput(filtered, nullptr, true))
+                    note("sat_lookup.glsl", "satBoxAverage");
                 result.images["moments_filtered" + suffix] = std::move(filtered);
             }
             result.images["sat" + suffix] = std::move(sat);

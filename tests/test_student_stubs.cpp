@@ -29,9 +29,10 @@ TEST(StudentStubs, GaussianSceneReportsMomentsBlurAndMsm) {
     EXPECT_GT(magenta, f.width * f.height / 10);
 }
 
-TEST(StudentStubs, SatSceneReportsTheScan) {
+TEST(StudentStubs, SatSceneReportsTheScanAndTheLookup) {
     RenderResult r = test::renderScene(loadScene(test::scenePath("contact")), "student");
     EXPECT_TRUE(mentions(r.stubNotes, "student/sat.comp")) << testing::PrintToString(r.stubNotes);
+    EXPECT_TRUE(mentions(r.stubNotes, "student/sat_lookup.glsl"));
 }
 
 TEST(StudentStubs, OneImplementedStageIsNoLongerReported) {
