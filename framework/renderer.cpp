@@ -2,9 +2,7 @@
 #include "renderer.h"
 
 #include "light_view.h"
-#include "mesh.h"
-
-#include <glm/gtc/matrix_inverse.hpp>
+#include "scene_geometry.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,72 +11,6 @@
 
 namespace sl {
 namespace {
-
-// Meshes of all objects in one vertex and one index buffer.
-struct SceneGeometry {
-    struct Draw {
-        GLsizei count;
-        size_t firstIndex;
-        GLint baseVertex;
-        glm::mat4 model;
-        const Object* object;
-    };
-    BufferHandle vertices, indices;
-    VertexArrayHandle vao;
-    std::vector<Draw> draws;
-    std::vector<Bounds> bounds;
-
-    explicit SceneGeometry(const Scene& scene) {
-        std::vector<float> vdata;
-        std::vector<std::uint32_t> idata;
-        for (const Object& object : scene.objects) {
-            Mesh mesh = buildMesh(object, scene);
-            glm::mat4 model = objectToWorld(object);
-            draws.push_back({GLsizei(mesh.indices.size()), idata.size(),
-                             GLint(vdata.size() / 6), model, &object});
-            bounds.push_back(worldBounds(mesh, model));
-            for (size_t i = 0; i < mesh.positions.size(); ++i) {
-                const glm::vec3& p = mesh.positions[i];
-                const glm::vec3& n = mesh.normals[i];
-                vdata.insert(vdata.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-            }
-            idata.insert(idata.end(), mesh.indices.begin(), mesh.indices.end());
-        }
-        if (vdata.empty()) return;
-        vertices = createBuffer(vdata.data(), GLsizeiptr(vdata.size() * sizeof(float)));
-        indices = createBuffer(idata.data(), GLsizeiptr(idata.size() * sizeof(std::uint32_t)));
-        GLuint id = 0;
-        gl::CreateVertexArrays(1, &id);
-        vao = VertexArrayHandle(id);
-        gl::VertexArrayVertexBuffer(id, 0, vertices.id(), 0, 6 * sizeof(float));
-        gl::VertexArrayElementBuffer(id, indices.id());
-        for (GLuint a = 0; a < 2; ++a) {
-            gl::EnableVertexArrayAttrib(id, a);
-            gl::VertexArrayAttribFormat(id, a, 3, GL_FLOAT, GL_FALSE, a * 3 * sizeof(float));
-            gl::VertexArrayAttribBinding(id, a, 0);
-        }
-    }
-
-    // Draws every object (or only shadow casters), setting per-object uniforms on `p`.
-    void draw(const GlProgram& p, bool castersOnly, bool material) const {
-        if (!vao) return;
-        gl::BindVertexArray(vao.id());
-        for (const Draw& d : draws) {
-            if (castersOnly && !d.object->castsShadows) continue;
-            p.set("uModel", d.model);
-            p.set("uNormalMatrix", glm::inverseTranspose(d.model));
-            if (material) {
-                p.set("uAlbedo", d.object->color);
-                p.set("uSpecular", d.object->specular);
-                p.set("uShininess", d.object->shininess);
-            }
-            gl::DrawElementsBaseVertex(GL_TRIANGLES, d.count, GL_UNSIGNED_INT,
-                                       reinterpret_cast<const void*>(d.firstIndex * 4),
-                                       d.baseVertex);
-        }
-        gl::BindVertexArray(0);
-    }
-};
 
 FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, const Texture& depth) {
     GLuint id = 0;
@@ -229,7 +161,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan) {
 
     std::vector<LightView> views;
     for (const Light& light : scene.lights)
-        views.push_back(computeLightView(light, fx, geometry.bounds));
+        views.push_back(computeLightView(light, fx, geometry.bounds()));
     std::map<int, ShadowMaps> maps;
     for (int li : plan.shadowLights) {
         ShadowMaps& m = maps[li];
