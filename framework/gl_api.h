@@ -87,6 +87,10 @@
     X(void, DrawElementsBaseVertex, (GLenum mode, GLsizei count, GLenum type,                \
                                      const void* indices, GLint basevertex))                 \
     X(void, DispatchCompute, (GLuint x, GLuint y, GLuint z))                                 \
+    X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count))                           \
+    X(void, ReadPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum format, GLenum type, \
+                         void* pixels))                                                      \
+    X(void, ReadBuffer, (GLenum mode))                                                       \
     X(void, MemoryBarrier, (GLbitfield barriers))
 
 namespace gl {

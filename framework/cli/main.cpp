@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     app.add_option("--backend", ctx.backend, "GL backend: auto (OSMesa, else EGL), osmesa or egl")
         ->check(CLI::IsMember({"auto", "osmesa", "egl"}));
     sl::cli::addRenderCommands(app, ctx);
+    sl::cli::addViewCommand(app, ctx);
     sl::cli::addProbeCommand(app, ctx);
     sl::cli::addGraderCommands(app, ctx);
     try {
