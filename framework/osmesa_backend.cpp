@@ -6,6 +6,8 @@
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 
+#include <cstdlib>
+#include <string>
 #include <vector>
 
 namespace sl {
@@ -19,10 +21,13 @@ using GetProcAddressFn = OSMESAproc (*)(const char*);
 class OSMesaContextImpl final : public GlContext {
 public:
     OSMesaContextImpl() {
-        const char* names[] = {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so"};
+        // $SHADOWLAB_OSMESA_LIBRARY names a libOSMesa outside the loader's path.
+        std::vector<std::string> names = {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so"};
+        if (const char* path = std::getenv("SHADOWLAB_OSMESA_LIBRARY"); path && *path)
+            names = {path};
         std::string errors;
-        for (const char* name : names) {
-            library_ = dlopen(name, RTLD_NOW | RTLD_LOCAL);
+        for (const auto& name : names) {
+            library_ = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
             if (library_) break;
             errors += std::string(" ") + dlerror() + ";";
         }

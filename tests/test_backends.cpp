@@ -1,5 +1,6 @@
 // Backends: both give a 4.5 core context on llvmpipe; failures are named, not silent.
 #include "gl_context.h"
+#include "gl_test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -31,6 +32,18 @@ TEST(Backends, BothBackendsInOneProcessReportTheSameMesa) {
     a.reset();
     auto b = createContext(BackendKind::Egl);
     EXPECT_EQ(mesaA, b->info().mesaVersion);
+}
+
+TEST(Backends, NoBackendSaysWhatWasTriedAndWhatToInstall) {
+    // No OSMesa at the given path, and no EGL vendor for glvnd to load.
+    auto r = test::runCommand(
+        "SHADOWLAB_OSMESA_LIBRARY=/nonexistent/libOSMesa.so "
+        "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/50_mesa.json " +
+        test::shadowlabBinary() + " info");
+    EXPECT_EQ(r.exitCode, 4) << r.output;
+    EXPECT_NE(r.output.find("osmesa:"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("egl:"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("apt-get install"), std::string::npos) << r.output;
 }
 
 TEST(Backends, UnknownBackendNameIsRejected) {
