@@ -3,6 +3,7 @@
 
 #include "gl_program.h"
 #include "gpu_resources.h"
+#include "renderer.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -47,6 +48,27 @@ std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
                                    GLsizeiptr(std::max<size_t>(padded.size(), 1) * 16));
     gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     return runProbe<glm::vec4>(program, inputs.size());
+}
+
+std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Image& moments,
+                                          const std::vector<glm::vec4>& boxes) {
+    if (moments.channels != 4 || moments.empty())
+        throw std::invalid_argument("probe: the SAT probe needs a non-empty RGBA moment map");
+    Renderer renderer(library);  // its satPass: the same dispatch as a render
+    Texture src = Texture::create(moments.width, moments.height, GL_RGBA32F);
+    Texture rows = Texture::create(moments.width, moments.height, GL_RGBA32F);
+    Texture table = Texture::create(moments.width, moments.height, GL_RGBA32F);
+    src.upload(moments);
+    renderer.satPass(src, rows, {1, 0});
+    renderer.satPass(rows, table, {0, 1});
+    gl::MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    GlProgram program = GlProgram::compute(library, "probe_sat_lookup.comp", {"SL_FILTER_SAT"});
+    program.use();
+    program.set("uSat", 0);
+    gl::BindTextureUnit(0, table.id());
+    BufferHandle in = createBuffer(boxes.data(), GLsizeiptr(std::max<size_t>(boxes.size(), 1) * 16));
+    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    return runProbe<glm::vec4>(program, boxes.size());
 }
 
 }  // namespace sl

@@ -3,6 +3,7 @@
 // students, the tests and the grader alike.
 #pragma once
 
+#include "image.h"
 #include "shader_source.h"
 
 #include <glm/glm.hpp>
@@ -19,5 +20,11 @@ std::vector<float> probeMomentShadowIntensity(const ShaderLibrary& library,
 // computeMoments(relativeDepth(lightDepth, (near, far))) per input (lightDepth, near, far).
 std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
                                     const std::vector<glm::vec3>& inputs);
+
+// satBoxAverage(table, box.xy = centre, box.zw = size), in texel units, where `table` is what
+// the solution's sat.comp makes of `moments` (RGBA, bottom row first, as Image stores it) in
+// its two passes. Tests the sat.comp + sat_lookup.glsl pair, as the contract grades it.
+std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Image& moments,
+                                          const std::vector<glm::vec4>& boxes);
 
 }  // namespace sl

@@ -1,8 +1,121 @@
-// cli_grade: `shadowlab grade`, `golden` and `package` (issue 3).
+// cli_grade: the grader's subcommands.
+//   grade         grade one submission (--submission) or a folder of them (--batch)
+//   golden        (re)make or check the golden images
+//   package       the student kit (.tar.gz) or the Gradescope autograder (.zip)
+//   grade-worker  hidden: one child process's render (worker.cpp); not for people
+#include "batch.h"
 #include "cli_commands.h"
+#include "golden.h"
+#include "package.h"
+#include "grader.h"
+#include "paths.h"
+#include "results.h"
+#include "worker.h"
+
+#include <iostream>
 
 namespace sl::cli {
 
-void addGraderCommands(CLI::App&, Context&) {}
+void addGraderCommands(CLI::App& app, Context& ctx) {
+    using namespace sl::grader;
+    auto* grade = app.add_subcommand("grade", "grade a submission against the reference or goldens");
+    struct GradeArgs {
+        GradeOptions o;
+        std::string submission, batch, out;
+        int jobs = 2;
+        bool noReport = false;
+    };
+    auto g = std::make_shared<GradeArgs>();
+    auto* sub = grade->add_option("--submission", g->submission, "folder holding the stage files");
+    auto* bat = grade->add_option("--batch", g->batch, "folder of submission folders (TA)");
+    sub->excludes(bat);
+    grade->add_option("--out", g->out, "output folder (results.json, report/)")->required();
+    grade->add_option("--scenes", g->o.scenes, "comma-separated scene names (default: all public)")
+        ->delimiter(',');
+    grade->add_option("--reference", g->o.reference, "live, golden or auto (live if reference/ exists)")
+        ->check(CLI::IsMember({"live", "golden", "auto"}));
+    grade->add_option("--timeout", g->o.timeoutSeconds, "seconds per render (default 20)")
+        ->check(CLI::PositiveNumber);
+    grade->add_option("--memory", g->o.memoryMb, "MB of address space per render (default 4096)")
+        ->check(CLI::PositiveNumber);
+    grade->add_option("-j,--jobs", g->jobs, "renders (single) or submissions (batch) at a time")
+        ->check(CLI::Range(1, 64));
+    grade->add_option("--goldens", g->o.goldens, "golden folder (default scenes/goldens)");
+    grade->add_option("--rubric", g->o.rubric, "rubric JSON (default grader/rubric.json)");
+    grade->add_flag("--no-report", g->noReport, "skip the HTML report");
+    grade->add_flag("--keep-work", g->o.keepWork, "keep OUT/.work-<pid> (worker images and logs)");
+    grade->callback([g, &ctx] {
+        if (g->submission.empty() == g->batch.empty())
+            throw CLI::ValidationError("grade", "give --submission DIR or --batch DIR");
+        GradeOptions o = g->o;
+        o.out = g->out;
+        o.backend = ctx.backend;
+        o.report = !g->noReport;
+        if (!g->batch.empty()) {
+            const int n = gradeBatch(g->batch, g->jobs, o);
+            std::cout << "graded " << n << " submissions: " << (o.out / "scores.csv").string() << "\n";
+            ctx.exitCode = Ok;
+            return;
+        }
+        o.submission = g->submission;
+        o.jobs = g->jobs;
+        GradeSummary s = gradeSubmission(o);
+        if (!s.failed) printScoreTable(std::cout, s);
+        std::cout << "results: " << (o.out / "results.json").string();
+        if (o.report && !s.failed) std::cout << ", report: " << (o.out / "report" / "index.html").string();
+        std::cout << "\n";
+        for (const auto& w : s.warnings) std::cerr << "warning: " << w << "\n";
+        ctx.exitCode = s.failed ? Failed : Ok;
+    });
+
+    auto* golden = app.add_subcommand("golden", "make (or --check) the golden images");
+    auto go = std::make_shared<GoldenOptions>();
+    go->out = repoRoot() / "scenes" / "goldens";
+    golden->add_option("--solution", go->solution, "solution to render (default reference)");
+    golden->add_option("--out", go->out, "golden folder (default scenes/goldens)");
+    golden->add_option("--scenes", go->scenes, "comma-separated scene names")->delimiter(',');
+    golden->add_flag("--check", go->check, "compare a fresh render's encoding with the manifest");
+    golden->callback([go, &ctx] {
+        GoldenOptions o = *go;
+        o.backend = ctx.backend;
+        auto stale = makeGoldens(o);
+        if (o.check) {
+            for (const auto& s : stale) std::cout << "stale: " << s << "\n";
+            std::cout << (stale.empty() ? "goldens are up to date\n"
+                                        : "goldens are stale: run shadowlab golden --solution "
+                                          "reference --out " + o.out.string() + "\n");
+            ctx.exitCode = stale.empty() ? Ok : Failed;
+        } else {
+            std::cout << "wrote " << (o.out / "manifest.json").string() << "\n";
+            ctx.exitCode = Ok;
+        }
+    });
+
+    auto* package = app.add_subcommand("package", "build the student kit or the Gradescope autograder");
+    auto pk = std::make_shared<std::pair<std::string, std::string>>("student", "");
+    package->add_option("--kind", pk->first, "student (tar.gz) or gradescope (zip)")
+        ->check(CLI::IsMember({"student", "gradescope"}));
+    package->add_option("--out", pk->second, "archive to write")->required();
+    package->callback([pk, &ctx] {
+        std::cout << makePackage(pk->first, pk->second) << "\n";
+        ctx.exitCode = Ok;
+    });
+
+    auto* worker = app.add_subcommand("grade-worker", "");
+    worker->group("");  // hidden: the grader's child process
+    auto w = std::make_shared<WorkerArgs>();
+    worker->add_option("--scene", w->scene)->required();
+    worker->add_option("--stage", w->stage)->required();
+    worker->add_option("--submission", w->submission)->required();
+    worker->add_option("--reference", w->reference);
+    worker->add_option("--input", w->input);
+    worker->add_option("--out", w->out)->required();
+    worker->callback([w, &ctx] {
+        WorkerArgs a = *w;
+        a.backend = ctx.backend;
+        runWorker(a);
+        ctx.exitCode = Ok;
+    });
+}
 
 }  // namespace sl::cli

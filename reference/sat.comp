@@ -2,35 +2,37 @@
 // Reference solution. Stage contract: docs/stage_contract.md.
 //
 // Dispatched twice: along rows (uDirection = (1, 0)), then along the columns of the result
-// (uDirection = (0, 1)). Afterwards dst(x, y) = Σ_{i <= x, j <= y} moments(i, j), from which
-// sat_lookup.glsl gets the mean over a box of any size with four reads.
+// (uDirection = (0, 1)). Afterwards dst holds the summed-area table Σ_{i <= x, j <= y}
+// moments(i, j) with an offset subtracted (see "Precision" below), from which
+// sat_lookup.glsl gets the mean over a box of any size.
 //
 // Invocation mapping: the framework dispatches 1 × ceil(lineCount / SAT_LINES) work groups.
 // A work group owns SAT_LINES consecutive lines (line = gl_WorkGroupID.y · SAT_LINES + ...),
-// and each line is shared by SAT_CHUNKS invocations that split it into contiguous chunks:
-//   1. each invocation sums its chunk serially;
-//   2. after a barrier, each invocation adds up the totals of the chunks before it on its
-//      line (its offset);
-//   3. it walks its chunk again, writing offset + running sum.
-// Work per line: 2n image loads, n stores and O(SAT_CHUNKS²) for the offsets, i.e. O(n),
-// with a single barrier. Any length n >= 1 works (trailing chunks of a short line are empty).
+// and each line is shared by SAT_CHUNKS invocations that split it into contiguous chunks.
+// Chunks are whole tiles (below), so each invocation scans its chunk alone: no shared memory,
+// no barrier. Work per line: n image loads and n stores, i.e. O(n). Any length n >= 1 works
+// (trailing chunks of a short line are empty). Consecutive invocations go to consecutive
+// *lines*: llvmpipe runs consecutive invocations as the lanes of one SIMD batch, so in the
+// column pass the lanes then read neighbouring texels of a row (about 1.4× faster there).
 //
-// Which invocation takes which (line, chunk) is ours to choose inside the work group. We put
-// consecutive invocations on consecutive *lines*: llvmpipe runs consecutive invocations as
-// the lanes of one SIMD batch, so in the column pass the lanes then read 8 neighbouring
-// texels of a row (one or two cache lines) instead of 8 texels a chunk apart (about 1.4×
-// faster there). Few chunks per line suit a CPU with few cores: with 64 chunks per line and
-// one line per work group, both passes were 2-3× slower. Measured on Mesa 22.3 llvmpipe,
-// 1024² RGBA32F: about 0.7× the cost of a copy pass along rows, 1.7× along columns.
-//
-// Precision: the sums are accumulated in float32 and grow to ~(width · height) · moment.
-// Their rounding error (~6e-8 relative) becomes large next to a small box's sum once
-// sat_lookup.glsl subtracts nearly equal corner values. A known fix is to subtract an
-// offset (e.g. 0.5, or the map's mean) from every moment before summing, so that the sums
-// stay small, and to add it back after the box average. Not done here (a later exercise).
+// Precision (docs/numerics.md): a plain float32 table grows to ~(width · height) · moment,
+// and its rounding error (~6e-8 relative) swamps a small box's sum once sat_lookup.glsl
+// subtracts nearly equal corners: ~3e-2 error on a 1-texel box at the far corner of 1024².
+// So we store the table with an offset subtracted, in two ways at once:
+//   * tiles: the sums restart every SAT_TILE texels along each line, so the table is made
+//     of independent SAT_TILE² tiles and no entry sums more than SAT_TILE² texels;
+//   * differences: within a tile segment src(g .. g + SAT_TILE - 1) of a line,
+//         dst(g) = src(g);                 dst(i) = Σ_{g < k <= i} (src(k) - src(g)).
+// After rows then columns, a tile with origin O holds, with a = m(O) and local coordinates,
+//     T(0, 0) = a,   T(x, 0) = Σ_{1<=i<=x} (m(i, 0) - a),   T(0, y) = Σ_{1<=j<=y} (m(0, j) - a),
+//     T(x, y) = Σ_{1<=i<=x, 1<=j<=y} (m(i,j) - m(0,j) - m(i,0) + a)      (x, y >= 1):
+// sums of differences that stay 0 on smooth depth (a lit ground plane) and small elsewhere.
+// sat_lookup.glsl rebuilds the box sum from them, tile by tile.
+// Measured on Mesa 22.3 llvmpipe, 1024² RGBA32F: docs/numerics.md, "Speed".
 
 #define SAT_CHUNKS 4   // invocations (chunks) per line = local_size_x
 #define SAT_LINES  16  // lines per work group        = local_size_y
+#define SAT_TILE   32  // tile size; must equal SAT_TILE in sat_lookup.glsl
 
 layout(local_size_x = SAT_CHUNKS, local_size_y = SAT_LINES, local_size_z = 1) in;
 
@@ -38,9 +40,6 @@ layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
 uniform ivec2 uDirection;  // (1, 0): prefix sums along rows; (0, 1): along columns
 uniform ivec2 uImageSize;
-
-// Chunk totals of the work group's lines. 16 · 4 · 16 bytes = 1 KiB.
-shared vec4 sChunkTotal[SAT_LINES][SAT_CHUNKS];
 
 // Image coordinates of position `pos` on line `line`.
 ivec2 satTexel(int pos, int line, bool alongRows)
@@ -59,35 +58,26 @@ void main()
     int l     = local % SAT_LINES;  // line within the work group
     int chunk = local / SAT_LINES;  // chunk within the line
     int line  = int(gl_WorkGroupID.y) * SAT_LINES + l;
-    // A line past the image (last work group) does no image access, but its invocations
-    // still reach the barrier below, as GLSL requires of every invocation.
-    bool lineInside = line < lineCount;
-
-    // This invocation's chunk [begin, end) of the line; the last chunks may be short or empty.
-    int chunkLength = (lineLength + SAT_CHUNKS - 1) / SAT_CHUNKS;
-    int begin = min(chunk * chunkLength, lineLength);
-    int end   = min(begin + chunkLength, lineLength);
-
-    // 1. Total of the chunk.
-    vec4 total = vec4(0.0);
-    if (lineInside) {
-        for (int i = begin; i < end; ++i)
-            total += imageLoad(uSource, satTexel(i, line, alongRows));
-    }
-    sChunkTotal[l][chunk] = total;
-    barrier();  // the offsets below read the totals of other invocations
-
-    // 2. Offset of this chunk: the sum of everything before it on the line.
-    if (!lineInside)
+    if (line >= lineCount)
         return;
-    vec4 running = vec4(0.0);
-    for (int c = 0; c < chunk; ++c)
-        running += sChunkTotal[l][c];
 
-    // 3. Walk the chunk again, writing the inclusive prefix sums.
+    // This invocation's chunk [begin, end): a whole number of tiles (the last may be short).
+    int tilesPerChunk = ((lineLength + SAT_TILE - 1) / SAT_TILE + SAT_CHUNKS - 1) / SAT_CHUNKS;
+    int begin = min(chunk * tilesPerChunk * SAT_TILE, lineLength);
+    int end   = min(begin + tilesPerChunk * SAT_TILE, lineLength);
+
+    vec4 first = vec4(0.0);    // src at the start of the current tile segment
+    vec4 running = vec4(0.0);  // Σ (src(k) - first) over the segment so far
     for (int i = begin; i < end; ++i) {
         ivec2 texel = satTexel(i, line, alongRows);
-        running += imageLoad(uSource, texel);
-        imageStore(uDestination, texel, running);
+        vec4 v = imageLoad(uSource, texel);
+        if (i % SAT_TILE == 0) {
+            first = v;
+            running = vec4(0.0);
+            imageStore(uDestination, texel, first);
+        } else {
+            running += v - first;
+            imageStore(uDestination, texel, running);
+        }
     }
 }

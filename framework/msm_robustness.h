@@ -1,0 +1,48 @@
+// msm_robustness: the grader's robustness stage. It probes a solution's momentShadowIntensity
+// (msm.glsl) on the hard-case catalogue (probe_cases.h) and says, per case, what went wrong:
+// NaN, Inf, a value outside [0, 1], G decreasing as zf grows, or G farther from the exact
+// 4MSM value than the case's bound. docs/numerics.md explains the cases.
+//
+// Usage (a GL context must be current, e.g. from createContext):
+//     RobustnessReport r = probeMsmRobustness(library);      // library: the student's stages
+//     r.score                       // in [0, 1]: the fraction of cases with no problem
+//     for (auto& c : r.cases) if (!c.ok()) ... c.input.name, c.input.b, c.input.zf, c.G,
+//                                              c.problems(), c.input.expected, c.input.bound
+//     r.summary(20)                 // human-readable: the score and up to 20 failing cases
+#pragma once
+
+#include "probe_cases.h"
+#include "shader_source.h"
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+struct RobustnessCase {
+    MsmCase input;           // the case: name, b, zf, expected, bound, note
+    float G = 0.0f;          // what the solution returned at input.zf
+    bool nan = false, inf = false;
+    bool outOfRange = false;   // G < 0 or G > 1
+    bool nonMonotone = false;  // along a zf ladder for this b, G drops by more than kMonotoneSlack
+    bool offExpected = false;  // |G − expected| > bound (only where expected is finite)
+    bool ok() const { return !(nan || inf || outOfRange || nonMonotone || offExpected); }
+    std::string problems() const;  // "NaN, non-monotone", or "" when ok
+};
+
+struct RobustnessReport {
+    std::vector<RobustnessCase> cases;  // every catalogue case, in catalogue order
+    int failed = 0;
+    double score = 1.0;                 // (cases − failed) / cases
+    std::string summary(int maxListed = 20) const;
+};
+
+// Rounding may make even a correct float32 4MSM wobble this much as zf grows.
+constexpr float kMonotoneSlack = 1e-4f;
+
+// Probes `library`'s momentShadowIntensity (uMomentBias = alpha) on the catalogue, in one
+// dispatch on the current GL context. Throws ShaderError if msm.glsl does not compile.
+RobustnessReport probeMsmRobustness(const ShaderLibrary& library,
+                                    float alpha = kReferenceMomentBias);
+
+}  // namespace sl

@@ -1,0 +1,13 @@
+// batch.h: grading a folder of submissions (`shadowlab grade --batch DIR -j N`).
+#pragma once
+
+#include "grader.h"
+
+namespace sl::grader {
+
+// Grades every subfolder of `dir` into OUT/<name>/ (results.json, report/), N at a time, with
+// a progress bar on stderr, and writes OUT/scores.csv: one row per submission, one column per
+// stage. `base` gives the limits, scenes and reference mode. Returns the number graded.
+int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base);
+
+}  // namespace sl::grader

@@ -1,0 +1,365 @@
+// grade: one submission, end to end. Intake, then the reference renders (or the goldens),
+// then one child process per (scene, stage), two at a time, then the comparisons, the
+// results.json and the report. Whatever happens, results.json is written.
+#include "golden.h"
+#include "grader.h"
+#include "intake.h"
+#include "isolation.h"
+#include "jobs.h"
+#include "metrics.h"
+#include "paths.h"
+#include "report.h"
+#include "results.h"
+#include "rubric.h"
+#include "scene_list.h"
+#include "scene.h"
+#include "shader_source.h"
+
+#include "image_io.h"
+#include "raw_image.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace sl::grader {
+namespace {
+
+struct Job {
+    size_t scene;
+    std::string stage;
+    fs::path out;
+    std::string missing;  // "file: reason" when a file it needs was not taken
+    ChildResult child;
+    bool ran = false;
+};
+
+// Phase times on stderr with SHADOWLAB_GRADER_TIMING=1 (docs/performance.md).
+struct Stopwatch {
+    std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+    bool on = std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr;
+    void lap(const char* what) {
+        const auto now = std::chrono::steady_clock::now();
+        if (on) std::cerr << "grade: " << what << ": " << std::chrono::duration<double>(now - last).count() << " s\n";
+        last = now;
+    }
+};
+
+Job makeJob(size_t scene, const std::string& stage, const fs::path& out) {
+    Job j;
+    j.scene = scene;
+    j.stage = stage;
+    j.out = out;
+    return j;
+}
+
+std::string fmt(double v, int digits = 2) {
+    std::ostringstream s;
+    s.setf(std::ios::fixed);
+    s.precision(digits);
+    s << v;
+    return s.str();
+}
+
+// What the child's failure means for the student.
+std::string failureText(const ChildResult& c, const GradeOptions& o) {
+    switch (c.kind) {
+        case ChildResult::TimedOut:
+            return "timed out after " + fmt(o.timeoutSeconds, 0) +
+                   " s: the render was stopped (look for a loop that never ends)";
+        case ChildResult::Signalled: return "crashed: " + signalName(c.signal);
+        case ChildResult::StartFailed: return "the grader could not start its worker";
+        case ChildResult::Exited: break;
+    }
+    std::string log = c.log;
+    if (c.exitCode == 3) {  // ShaderError: file:line lines, then the driver's log
+        const std::string head = "shader error:\n";
+        if (auto p = log.find(head); p != std::string::npos) log = log.substr(p + head.size());
+        if (log.size() > 4000) log = log.substr(0, 4000) + "\n...";
+        return "compile or link error:\n" + log;
+    }
+    if (log.size() > 2000) log = "..." + log.substr(log.size() - 2000);
+    std::string text = "render failed (exit " + std::to_string(c.exitCode) + "): " + log;
+    if (log.find("alloc") != std::string::npos || log.find("memory") != std::string::npos ||
+        log.find("map") != std::string::npos)
+        text += "\n(the memory limit is " + std::to_string(o.memoryMb) + " MB)";
+    return text;
+}
+
+class Grading {
+public:
+    Grading(const GradeOptions& o, const Rubric& r) : o_(o), rubric_(r) {}
+
+    GradeSummary run() {
+        GradeSummary s;
+        const fs::path work = workDir(o_);
+        std::error_code ec;
+        fs::remove_all(work, ec);
+        fs::create_directories(work);
+        intake_ = takeSubmission(o_.submission, work / "submission");
+        scenes_ = gradedScenes(o_.scenes);
+        haveRef_ = haveReference();
+        mode_ = resolveReferenceMode(o_.reference);
+        s.referenceMode = mode_;
+        if (mode_ == "live" && !haveRef_)
+            throw std::runtime_error("--reference live needs reference/; use --reference golden");
+        goldens_ = o_.goldens.empty() ? repoRoot() / "scenes" / "goldens" : o_.goldens;
+        if (mode_ == "golden") {
+            const nlohmann::json manifest = readManifest(goldens_);
+            if (manifest.is_null())
+                throw std::runtime_error("no golden images in " + goldens_.string() +
+                                         " (make them with: shadowlab golden --solution reference)");
+            for (const auto& scene : scenes_) {
+                const auto& entry = manifest["scenes"].contains(scene.name)
+                                        ? manifest["scenes"][scene.name] : nlohmann::json();
+                if (entry.is_null())
+                    s.warnings.push_back("no goldens for scene " + scene.name);
+                else if (entry.value("scene_sha256", "") != sha256File(scene.path))
+                    s.warnings.push_back("scene " + scene.name + " changed since its goldens were made");
+            }
+        }
+        if (!intake_.ignored.empty()) {
+            std::string names;
+            for (const auto& n : intake_.ignored) names += " " + n;
+            s.warnings.push_back("ignored (not stage files):" + names);
+        }
+
+        // Phase A: reference renders and the stages that need no reference input file.
+        std::vector<Job> phaseA, phaseB;
+        for (size_t i = 0; i < scenes_.size(); ++i) {
+            if (mode_ == "live" && o_.referenceImages.empty()) phaseA.push_back(makeJob(i, "reference", work / "ref" / scenes_[i].name));
+            for (const auto& stage : stageNames()) {
+                if (!stageApplies(stage, scenes_[i].filter)) continue;
+                Job job = makeJob(i, stage, work / scenes_[i].name / stage);
+                for (const auto& f : neededFiles(stage, scenes_[i].filter))
+                    if (!intake_.has(f) && job.missing.empty())
+                        job.missing = f + ": " + intake_.refused.at(f);
+                (stage == "gaussian" || stage == "sat" ? phaseB : phaseA).push_back(job);
+            }
+        }
+        Stopwatch clock;
+        runPhase(phaseA);
+        clock.lap("renders without reference input");
+        runPhase(phaseB);
+        clock.lap("filter renders");
+        if (mode_ == "golden") {
+            for (const auto& w : manifestWarnings(readManifest(goldens_), running_))
+                s.warnings.push_back(w);
+        } else {
+            for (auto& j : phaseA)
+                if (j.stage == "reference" && !(j.child.kind == ChildResult::Exited &&
+                                                j.child.exitCode == 0))
+                    s.warnings.push_back("reference render of " + scenes_[j.scene].name +
+                                         " failed: " + failureText(j.child, o_));
+        }
+
+        std::unique_ptr<ReportWriter> report;
+        if (o_.report) report = std::make_unique<ReportWriter>(o_.out / "report");
+        for (auto* phase : {&phaseA, &phaseB})
+            for (auto& job : *phase)
+                if (job.stage != "reference") s.tests.push_back(score(job, report.get()));
+        std::sort(s.tests.begin(), s.tests.end(), [](const TestResult& a, const TestResult& b) {
+            auto rank = [](const std::string& st) {
+                const auto& n = stageNames();
+                return std::find(n.begin(), n.end(), st) - n.begin();
+            };
+            return a.scene != b.scene ? a.scene < b.scene : rank(a.stage) < rank(b.stage);
+        });
+        // Weights: a stage's points are split evenly over the scenes it applies to.
+        std::map<std::string, int> count;
+        for (const auto& t : s.tests) ++count[t.stage];
+        double weightSum = 0.0;
+        for (const auto& [stage, n] : count) weightSum += rubric_.weights.count(stage) ? rubric_.weights.at(stage) : 0.0;
+        for (auto& t : s.tests) {
+            const double w = rubric_.weights.count(t.stage) ? rubric_.weights.at(t.stage) : 0.0;
+            const double max = weightSum > 0 ? rubric_.total * w / weightSum / count[t.stage] : 0.0;
+            t.score *= max;  // score() returned the fraction of points
+            t.maxScore = max;
+            s.score += t.score;
+            s.maxScore += t.maxScore;
+        }
+        if (report) report->finish(s);
+        clock.lap("comparisons and report");
+        if (!o_.keepWork) fs::remove_all(work, ec);
+        return s;
+    }
+
+private:
+    // Files a stage's render compiles from the submission.
+    std::vector<std::string> neededFiles(const std::string& stage, const std::string& filter) const {
+        // Without reference/, msm runs on the submission's own moments and filter.
+        if (stage == "msm" && !haveRef_) return stageFiles("final", filter);
+        return stageFiles(stage, filter);
+    }
+
+    fs::path referenceFile(size_t scene, const std::string& image) const {
+        const fs::path refs = o_.referenceImages.empty() ? workDir(o_) / "ref" : o_.referenceImages;
+        return mode_ == "live" ? refs / scenes_[scene].name / (image + ".raw")
+                               : goldens_ / scenes_[scene].name / (image + ".exr");
+    }
+
+    void runPhase(std::vector<Job>& jobs) {
+        std::vector<ChildSpec> specs;
+        std::vector<size_t> index;
+        for (size_t k = 0; k < jobs.size(); ++k) {
+            Job& j = jobs[k];
+            if (!j.missing.empty()) continue;
+            fs::create_directories(j.out);
+            specs.push_back(workerSpec(o_, scenes_[j.scene], j.stage,
+                                       referenceFile(j.scene, "moments_raw"), j.out));
+            index.push_back(k);
+        }
+        auto results = runChildren(specs, {o_.timeoutSeconds, o_.memoryMb}, o_.jobs);
+        for (size_t k = 0; k < results.size(); ++k) {
+            Job& j = jobs[index[k]];
+            j.child = results[k];
+            j.ran = true;
+            if (running_.is_null() && j.child.kind == ChildResult::Exited && j.child.exitCode == 0) {
+                std::ifstream in(j.out / "worker.json");
+                try { running_ = nlohmann::json::parse(in); } catch (...) {}
+            }
+        }
+    }
+
+    // Returns the fraction of the test's points in `score` (run() scales it).
+    TestResult score(const Job& job, ReportWriter* report) {
+        const GradedScene& gs = scenes_[job.scene];
+        TestResult t;
+        t.scene = gs.name;
+        t.stage = job.stage;
+        t.hidden = gs.hidden;
+        if (!job.missing.empty()) {
+            t.output = job.missing;
+            return t;
+        }
+        if (!(job.child.kind == ChildResult::Exited && job.child.exitCode == 0)) {
+            t.output = failureText(job.child, o_);
+            return t;
+        }
+        nlohmann::json worker;
+        try {
+            std::ifstream in(job.out / "worker.json");
+            worker = nlohmann::json::parse(in);
+        } catch (const std::exception&) {
+            t.output = "the render left no result";
+            return t;
+        }
+        // Stub notes naming the submission's files of this stage: not implemented.
+        std::string notes;
+        for (const auto& n : worker.value("stubNotes", std::vector<std::string>{}))
+            for (const auto& f : stageFiles(job.stage, gs.filter))
+                if (n.find("submission/" + f) != std::string::npos) notes += n + "\n";
+
+        const std::string prefix = stageImage(job.stage);
+        std::vector<std::string> images;
+        for (const auto& name : worker.value("images", std::vector<std::string>{}))
+            if (name.rfind(prefix, 0) == 0 && (prefix != "moments_filtered" || name == prefix))
+                images.push_back(name);
+        if (images.empty()) images.push_back(prefix);
+        double fraction = 1.0;
+        std::ostringstream detail;
+        for (const auto& name : images) {
+            Image ref, mine;
+            try {
+                ref = readAnyImage(referenceFile(job.scene, name));
+            } catch (const std::exception& e) {
+                t.output = "no reference image " + name + " to compare with (" + e.what() + ")";
+                return t;
+            }
+            try {
+                mine = readRaw(job.out / (name + ".raw"));
+            } catch (const std::exception&) {
+                fraction = 0.0;
+                detail << name << ": no image was produced\n";
+                continue;
+            }
+            Comparison c = compare(job, mine, ref);
+            fraction = std::min(fraction, c.error.empty() ? c.fraction : 0.0);
+            t.metrics[name] = c.toJson();
+            t.images.push_back(name);
+            detail << name << ": " << fmt(100.0 * c.fraction, 2) << "% within tolerance"
+                   << "; OIIO mean " << fmt(c.mean, 6) << ", RMS " << fmt(c.rms, 6) << ", max "
+                   << fmt(c.max, 6) << ", PSNR " << fmt(c.psnr, 1) << " dB";
+            if (!c.error.empty()) detail << "; " << c.error;
+            if (c.nonFinite) detail << "; " << c.nonFinite << " NaN/Inf values (counted wrong)";
+            if (c.stubTexels) detail << "; " << c.stubTexels << " texels hold the stub value -1";
+            detail << "\n";
+            if (report) report->add(t, name, ref, mine, c);
+        }
+        t.score = notes.empty() ? rubric_.points(job.stage, fraction, 1.0) : 0.0;
+        const auto [pass, zero] = rubric_.ramp(job.stage);
+        std::string head;
+        if (!notes.empty()) head = "not implemented: " + notes;
+        else if (t.score >= 1.0) head = "full marks\n";
+        else head = fmt(100.0 * fraction, 2) + "% within tolerance (full marks from " +
+                    fmt(100.0 * pass, 1) + "%, none at " + fmt(100.0 * zero, 1) + "%)\n";
+        if (notes.empty() && fraction == 0.0 && detail.str().find("stub value") != std::string::npos)
+            head = "not implemented (the output is the stub value -1)\n";
+        t.output = head + detail.str();
+        return t;
+    }
+
+    Comparison compare(const Job& job, const Image& mine, const Image& ref) {
+        if (job.stage == "msm") return compareImages(mine, ref, rubric_.shadowTol);
+        if (job.stage == "final") return compareImages(mine, ref, rubric_.finalTol);
+        std::vector<double> extra;
+        if (job.stage == "sat") {
+            // A float32 table's rounding grows with its entries (up to the sum of the whole
+            // map), and a correct table summed in another order rounds differently: allow
+            // satRounding ulps of the total, spread over the box.
+            Scene scene = loadScene(scenes_[job.scene].path.string());
+            const double area = double(scene.shadow.satKernelTexels) * scene.shadow.satKernelTexels;
+            extra.assign(ref.channels, 0.0);
+            for (size_t i = 0; i < ref.pixels.size(); ++i)
+                extra[i % ref.channels] += std::fabs(ref.pixels[i]);
+            for (double& e : extra) e = rubric_.satRounding * std::ldexp(e, -24) / area;
+        }
+        return compareMoments(mine, ref, rubric_.momentsAbs, rubric_.momentsRel, extra);
+    }
+
+    const GradeOptions& o_;
+    const Rubric& rubric_;
+    IntakeResult intake_;
+    std::vector<GradedScene> scenes_;
+    bool haveRef_ = false;
+    std::string mode_;
+    fs::path goldens_;
+    nlohmann::json running_;  // backend/renderer/Mesa of the workers
+};
+
+}  // namespace
+
+GradeSummary gradeSubmission(const GradeOptions& o) {
+    const auto start = std::chrono::steady_clock::now();
+    auto seconds = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    GradeSummary s;
+    const fs::path results = o.out / "results.json";
+    try {
+        std::error_code ec;
+        fs::create_directories(o.out, ec);
+        Rubric rubric = loadRubric(o.rubric.empty() ? repoRoot() / "grader" / "rubric.json" : o.rubric);
+        s = Grading(o, rubric).run();
+        s.seconds = seconds();
+        writeResults(results, resultsJson(s, rubric));
+    } catch (const std::exception& e) {
+        s = {};
+        s.failed = true;
+        s.warnings.push_back(std::string("grader failed: ") + e.what());
+        s.seconds = seconds();
+        writeFailureResults(results, e.what(), s.seconds);
+    } catch (...) {
+        s = {};
+        s.failed = true;
+        s.warnings.push_back("grader failed: unknown error");
+        writeFailureResults(results, "unknown error", seconds());
+    }
+    return s;
+}
+
+}  // namespace sl::grader

@@ -1,0 +1,82 @@
+// grader.h: the types the grader's files share — stages, options, one render job's outcome and
+// one scored test. The concepts live in their own files: stages, scene_list, intake,
+// isolation (child processes), worker (what a child renders), raw_image, metrics, rubric,
+// golden, results, report, jobs, grade (one submission), batch, package, cli_grade (docs/grading.md).
+#pragma once
+
+#include "image.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sl::grader {
+
+namespace fs = std::filesystem;
+
+// The graded stages, in report order. Each is scored on reference inputs except `final`.
+const std::vector<std::string>& stageNames();  // moments, gaussian, sat, msm, final
+// The submission files a stage compiles (final: the files the scene's pipeline uses).
+std::vector<std::string> stageFiles(const std::string& stage, const std::string& filter);
+// Whether `stage` applies to a scene with this filter ("gaussian" | "sat" | "none").
+bool stageApplies(const std::string& stage, const std::string& filter);
+// The image names a stage produces and is compared on (before light/camera suffixes).
+std::string stageImage(const std::string& stage);  // moments_raw, moments_filtered, shadow, final
+
+struct GradeOptions {
+    fs::path submission;          // folder of stage files
+    fs::path out;                 // results.json, report/, .work-<pid>/ (scratch)
+    std::vector<std::string> scenes;  // names; empty: every public scene with a shadowing light
+    std::string reference = "auto";   // live | golden | auto (live if reference/ exists)
+    double timeoutSeconds = 20.0;
+    long memoryMb = 4096;
+    int jobs = 2;                 // workers at a time
+    fs::path goldens;             // default: scenes/goldens
+    fs::path rubric;              // default: grader/rubric.json
+    bool report = true;           // write OUT/report
+    bool quiet = false;           // no table on stdout
+    std::string backend = "auto";
+    bool keepWork = false;        // keep OUT/.work (the workers' images and logs)
+    fs::path referenceImages;     // live mode: reference renders made already (batch)
+};
+
+// What one child process did.
+struct JobOutcome {
+    enum Kind { Ok, TimedOut, ShaderFailed, Crashed, Failed, NotRun } kind = NotRun;
+    std::string message;     // for the student: reason, with file:line for shader errors
+    double seconds = 0.0;
+    nlohmann::json worker;   // the worker's worker.json (images written, stub notes)
+};
+
+// One Gradescope test: a (scene, stage) pair.
+struct TestResult {
+    std::string scene, stage;
+    bool hidden = false;      // a scene given by path outside scenes/: after_due_date
+    double score = 0.0, maxScore = 0.0;
+    std::string output;       // reason, metrics
+    nlohmann::json metrics;   // per image: fraction within tolerance, OIIO figures, NaN count
+    std::vector<std::string> images;  // compared image names (report)
+};
+
+struct GradeSummary {
+    double score = 0.0, maxScore = 0.0;
+    std::vector<TestResult> tests;
+    std::vector<std::string> warnings;  // golden manifest mismatch, skipped scenes
+    double seconds = 0.0;
+    std::string referenceMode;          // "live" | "golden"
+    bool failed = false;                // the grader itself failed (results.json says why)
+};
+
+// "live" or "golden" for --reference live|golden|auto (auto: live if reference/ is complete).
+std::string resolveReferenceMode(const std::string& requested);
+
+// Live mode, for many submissions: renders each scene's reference once into dir/<scene>/.
+void renderReferenceImages(const GradeOptions& options, const fs::path& dir);
+
+// Grades one submission; writes OUT/results.json (always), OUT/report/. Never throws.
+GradeSummary gradeSubmission(const GradeOptions& options);
+
+}  // namespace sl::grader

@@ -1,0 +1,112 @@
+// worker: the render a child process does for one (scene, stage) pair. Stage isolation is
+// a ShaderLibrary whose stage map points the graded stage's files at the submission and every
+// other stage file at reference/:
+//   moments   shadow passes only, student moments.glsl            -> moments_raw
+//   gaussian  student blur on the reference moments (from a file)  -> moments_filtered
+//   sat       student sat.comp + sat_lookup.glsl on the same input  -> moments_filtered
+//   msm       student msm.glsl, reference moments and filter       -> shadow
+//   final     the whole submission                                 -> final
+//   reference the whole reference solution                         -> all of the above
+// The images go out as .raw (raw_image.h). The filter stages read their input from a file, so they are isolated with goldens alone.
+#include "worker.h"
+
+#include "gl_context.h"
+#include "pass_plan.h"
+#include "paths.h"
+#include "raw_image.h"
+#include "renderer.h"
+#include "scene.h"
+
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+
+namespace sl::grader {
+namespace {
+
+ShaderLibrary makeLibrary(const WorkerArgs& a) {
+    const fs::path sub = a.submission;
+    const fs::path other = a.reference.empty() ? sub : fs::path(a.reference);
+    std::map<std::string, fs::path> dirs;
+    for (const auto& name : stageFileNames()) dirs[name] = other;
+    auto mine = [&](const std::string& name) { dirs[name] = sub; };
+    if (a.stage == "moments") mine("moments.glsl");
+    if (a.stage == "gaussian") mine("gaussian_blur.comp");
+    if (a.stage == "sat") mine("sat.comp"), mine("sat_lookup.glsl");
+    if (a.stage == "msm") mine("msm.glsl");
+    if (a.stage == "final")
+        for (const auto& name : stageFileNames()) mine(name);
+    // Student paths show as "submission/msm.glsl:42".
+    return ShaderLibrary(dirs, {sub, repoRoot() / "shaders"}, sub.parent_path());
+}
+
+}  // namespace
+
+void runWorker(const WorkerArgs& a) {
+    // Test hook (tests/test_grader_limits.cpp): make this stage's worker crash.
+    if (const char* fault = std::getenv("SHADOWLAB_GRADER_FAULT"); fault && a.stage == fault)
+        std::raise(SIGSEGV);
+    Scene scene = loadScene(a.scene);
+    auto context = createContext(parseBackendKind(a.backend));
+    Renderer renderer(makeLibrary(a));
+    RenderResult result;
+    std::vector<std::string> wanted;
+    if (a.stage == "gaussian" || a.stage == "sat") {
+        // The building blocks on the reference moments; first shadowing light only.
+        Image input = readAnyImage(a.input);
+        Texture src = Texture::create(input.width, input.height, GL_RGBA32F);
+        Texture scratch = Texture::create(input.width, input.height, GL_RGBA32F);
+        Texture dst = Texture::create(input.width, input.height, GL_RGBA32F);
+        src.upload(input);
+        const ShadowEffect& fx = scene.shadow;
+        if (a.stage == "gaussian") {
+            renderer.gaussianPass(src, scratch, fx.gaussianRadius, fx.gaussianSigma, {1, 0});
+            renderer.gaussianPass(scratch, dst, fx.gaussianRadius, fx.gaussianSigma, {0, 1});
+        } else {
+            Texture table = Texture::create(input.width, input.height, GL_RGBA32F);
+            renderer.satPass(src, scratch, {1, 0});
+            renderer.satPass(scratch, table, {0, 1});
+            renderer.satResolvePass(table, dst, fx.satKernelTexels);
+        }
+        gl::Finish();
+        result.images["moments_filtered"] = dst.read();
+    } else {
+        PassPlan plan;
+        if (a.stage == "moments") {
+            // Only the shadow passes: nothing else compiles, so only moments.glsl can fail.
+            scene.shadow.filter = FilterKind::None;
+            plan = planPasses(scene);
+            std::erase_if(plan.passes,
+                          [](const PlannedPass& p) { return p.kind != PassKind::Shadow; });
+        } else {
+            plan = planPasses(scene);
+        }
+        result = renderer.render(scene, plan);
+    }
+    const std::string prefix = a.stage == "moments"    ? "moments_raw"
+                               : a.stage == "msm"      ? "shadow"
+                               : a.stage == "final"    ? "final"
+                               : a.stage == "reference" ? ""
+                                                        : "moments_filtered";
+    fs::create_directories(a.out);
+    nlohmann::json written = nlohmann::json::array();
+    for (const auto& [name, image] : result.images) {
+        if (name.rfind("sat", 0) == 0) continue;  // the table itself is never compared
+        if (!prefix.empty() && name.rfind(prefix, 0) != 0) continue;
+        writeRaw(image, fs::path(a.out) / (name + ".raw"));
+        written.push_back(name);
+    }
+    const ContextInfo& info = context->info();
+    nlohmann::json j = {{"stage", a.stage},
+                        {"scene", scene.name},
+                        {"images", written},
+                        {"stubNotes", result.stubNotes},
+                        {"backend", info.backend},
+                        {"renderer", info.renderer},
+                        {"mesaVersion", info.mesaVersion}};
+    std::ofstream(fs::path(a.out) / "worker.json") << j.dump(2) << "\n";
+}
+
+}  // namespace sl::grader

@@ -1,0 +1,23 @@
+// worker.h: what one grader child process renders (the hidden `grade-worker` subcommand).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace sl::grader {
+
+struct WorkerArgs {
+    std::string scene;       // scene JSON path
+    std::string stage;       // reference | moments | gaussian | sat | msm | final
+    std::string submission;  // staged submission folder
+    std::string reference;   // reference solution folder ("" when only goldens exist)
+    std::string input;       // reference moments_raw EXR (gaussian, sat)
+    std::string out;         // folder for <image>.exr and worker.json
+    std::string backend = "auto";
+};
+
+// Renders and writes the stage's images. Throws (ShaderError for compile/link errors: the
+// command line turns it into exit code 3 and the mapped log on stderr).
+void runWorker(const WorkerArgs& args);
+
+}  // namespace sl::grader

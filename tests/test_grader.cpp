@@ -1,0 +1,180 @@
+// The grader (docs/grading.md): full marks for the reference, live and against the goldens;
+// zero with "not implemented" for the stubs; a valid results.json in every case, even when the
+// grader itself cannot run; the report opens in a browser; batch grading writes scores.csv.
+#include "test_grader_support.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <set>
+
+namespace sl {
+namespace {
+
+void expectGradescopeFormat(const nlohmann::json& r) {
+    ASSERT_TRUE(r.is_object()) << r;
+    EXPECT_TRUE(r["score"].is_number());
+    EXPECT_TRUE(r["execution_time"].is_number());
+    EXPECT_TRUE(r["output"].is_string());
+    ASSERT_TRUE(r["tests"].is_array());
+    for (const auto& t : r["tests"]) {
+        for (const char* k : {"name", "output", "visibility", "status"}) EXPECT_TRUE(t[k].is_string()) << k;
+        EXPECT_TRUE(t["score"].is_number());
+        EXPECT_TRUE(t["max_score"].is_number());
+        EXPECT_TRUE(t["status"] == "passed" || t["status"] == "failed");
+        ASSERT_EQ(t["tags"].size(), 2u);
+        EXPECT_EQ(t["tags"][0].get<std::string>().rfind("stage:", 0), 0u);
+        EXPECT_EQ(t["tags"][1].get<std::string>().rfind("scene:", 0), 0u);
+    }
+}
+
+}  // namespace
+
+TEST(Grader, ReferenceScoresFullOnEveryStageLive) {
+    fs::path out = test::tempDir("grader_reference_live");
+    auto g = test::grade("--reference live --submission " + (test::root() / "reference").string(), out);
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    expectGradescopeFormat(g.results);
+    EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), 100.0) << g.run.output;
+    std::set<std::string> stages;
+    for (const auto& t : g.results["tests"]) {
+        EXPECT_EQ(t["status"], "passed") << t;
+        stages.insert(t["tags"][0].get<std::string>());
+    }
+    EXPECT_EQ(stages.size(), 5u);
+    EXPECT_NE(g.run.output.find("msm "), std::string::npos) << g.run.output;  // the table
+    EXPECT_TRUE(fs::exists(out / "report" / "index.html"));
+}
+
+TEST(Grader, CommittedGoldensMatchALiveReferenceRender) {
+    // Stale goldens (after a change to reference/ or a scene) must not pass silently. Remake:
+    //   build/shadowlab golden --solution reference --out scenes/goldens
+    const fs::path goldens = test::root() / "scenes" / "goldens";
+    auto manifest = nlohmann::json::parse(std::ifstream(goldens / "manifest.json"));
+    auto g = test::grade("--reference golden --scenes classic,contact --no-report --submission " +
+                             (test::root() / "reference").string(),
+                         test::tempDir("grader_reference_golden"));
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), 100.0) << g.run.output;
+    // Same Mesa as the manifest: the encoded images must be bit-identical.
+    auto info = test::runCommand(test::shadowlabBinary() + " info");
+    if (info.output.find(manifest["mesa_version"].get<std::string>()) == std::string::npos)
+        GTEST_SKIP() << "this Mesa differs from the goldens' (" << manifest["mesa_version"]
+                     << "): only the tolerance check above applies";
+    auto check = test::runCommand(test::shadowlabBinary() + " golden --check");
+    EXPECT_EQ(check.exitCode, 0) << "goldens are stale; remake them with\n"
+                                    "  build/shadowlab golden --solution reference --out scenes/goldens\n"
+                                 << check.output;
+}
+
+TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
+    fs::path out = test::tempDir("grader_stubs");
+    auto g = test::grade("--scenes classic,contact --submission " + (test::root() / "student").string(), out);
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    expectGradescopeFormat(g.results);
+    EXPECT_EQ(g.results["score"].get<double>(), 0.0);
+    ASSERT_EQ(g.results["tests"].size(), 8u);  // 2 scenes × (moments, filter, msm, final)
+    for (const auto& t : g.results["tests"]) {
+        EXPECT_EQ(t["score"].get<double>(), 0.0) << t["name"];
+        EXPECT_NE(t["output"].get<std::string>().find("not implemented"), std::string::npos) << t;
+    }
+
+    // The report opens in a browser and shows something.
+    const fs::path page = out / "report" / "index.html";
+    ASSERT_TRUE(fs::exists(page));
+    if (test::runCommand("command -v chromium").exitCode != 0)
+        GTEST_SKIP() << "chromium is not installed (apt-get install chromium): report not opened";
+    const fs::path shot = test::tempDir("grader_report_shot") / "shot.png";
+    const fs::path profile = test::tempDir("grader_report_profile");
+    auto r = test::runCommand(
+        "timeout 60 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+        "--disable-background-networking --disable-component-update --disable-sync "
+        "--user-data-dir=" + profile.string() + " --window-size=1200,2000 --screenshot=" +
+        shot.string() + " file://" + fs::absolute(page).string());
+    ASSERT_TRUE(fs::exists(shot)) << r.output;
+    OIIO::ImageBuf img(shot.string());
+    ASSERT_TRUE(img.read()) << img.geterror();
+    auto stats = OIIO::ImageBufAlgo::computePixelStats(img);
+    double spread = 0;
+    for (size_t c = 0; c < 3 && c < stats.stddev.size(); ++c) spread += stats.stddev[c];
+    EXPECT_GT(spread, 0.05) << "the screenshot is (nearly) one colour: a blank page";
+    EXPECT_GT(fs::file_size(shot), 20000u);
+}
+
+TEST(Grader, ResultsJsonIsWrittenEvenWhenTheGraderCannotRun) {
+    fs::path out = test::tempDir("grader_failure");
+    auto g = test::grade("--scenes no_such_scene --submission " + (test::root() / "reference").string(), out);
+    EXPECT_NE(g.run.exitCode, 0);
+    ASSERT_TRUE(g.results.is_object()) << g.run.output;
+    EXPECT_EQ(g.results["score"].get<double>(), 0.0);
+    EXPECT_NE(g.results["output"].get<std::string>().find("no_such_scene"), std::string::npos);
+
+    std::ofstream(out / "broken.json") << "{ not json";
+    auto h = test::grade("--rubric " + (out / "broken.json").string() + " --submission " +
+                             (test::root() / "reference").string(), out / "b");
+    ASSERT_TRUE(h.results.is_object()) << h.run.output;
+    EXPECT_NE(h.results["output"].get<std::string>().find("broken.json"), std::string::npos);
+}
+
+TEST(Grader, BatchWritesOneRowPerSubmission) {
+    fs::path batch = test::tempDir("grader_batch_in");
+    fs::copy(test::root() / "reference", batch / "alice");
+    fs::copy(test::root() / "student", batch / "bob");
+    fs::path out = test::tempDir("grader_batch_out");
+    auto r = test::runCommand(test::shadowlabBinary() + " grade --batch " + batch.string() +
+                              " -j 2 --scenes classic --no-report --out " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("2/2"), std::string::npos) << r.output;  // progress bar
+    std::string csv = test::readText(out / "scores.csv");
+    EXPECT_NE(csv.find("submission,total,max,moments,gaussian,sat,msm,final"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("alice,100.00,100.00"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("bob,0.00,100.00"), std::string::npos) << csv;
+    EXPECT_TRUE(fs::exists(out / "alice" / "results.json"));
+    EXPECT_TRUE(fs::exists(out / "bob" / "results.json"));
+}
+
+TEST(Grader, PackagesLeaveTheSolutionOutOfTheStudentKit) {
+    fs::path dir = test::tempDir("grader_package");
+    auto r = test::runCommand(test::shadowlabBinary() + " package --kind student --out " +
+                              (dir / "kit.tar.gz").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto list = test::runCommand("tar -tzf " + (dir / "kit.tar.gz").string());
+    EXPECT_NE(list.output.find("shadowlab/student/msm.glsl"), std::string::npos);
+    EXPECT_NE(list.output.find("shadowlab/scenes/goldens/manifest.json"), std::string::npos);
+    EXPECT_EQ(list.output.find("shadowlab/reference/"), std::string::npos);
+    EXPECT_EQ(list.output.find("tests/submissions"), std::string::npos);
+    EXPECT_EQ(list.output.find("shadowlab/build/"), std::string::npos);
+
+    if (test::runCommand("command -v zip && command -v unzip").exitCode != 0)
+        GTEST_SKIP() << "zip or unzip is not installed: the Gradescope zip is not checked";
+    r = test::runCommand(test::shadowlabBinary() + " package --kind gradescope --out " +
+                         (dir / "autograder.zip").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    list = test::runCommand("unzip -l " + (dir / "autograder.zip").string());
+    for (const char* f : {" setup.sh", " run_autograder", "source/reference/msm.glsl", "source/grader/rubric.json"})
+        EXPECT_NE(list.output.find(f), std::string::npos) << f;
+}
+
+}  // namespace sl
+
+namespace sl {
+
+// The SAT precision requirement (docs/numerics.md) in the grader: a plain float32 table
+// (tests/submissions/fragile/naive_sat) is a correct algorithm with too little precision, so
+// it keeps most SAT points but not all — and only the SAT stage notices.
+TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
+    const fs::path naive = test::root() / "tests/submissions/fragile/naive_sat";
+    fs::path sub = test::makeSubmission(
+        "naive_sat", {{"sat.comp", test::readText(naive / "sat.comp")},
+                      {"sat_lookup.glsl", test::readText(naive / "sat_lookup.glsl")}});
+    auto g = test::grade("--submission " + sub.string() + " --scenes contact,wide_blur --no-report",
+                         test::tempDir("grader_naive_sat_out"));
+    ASSERT_FALSE(g.results.is_null()) << g.run.output;
+    const double s = g.score("contact", "sat"), max = g.maxScore("contact", "sat");
+    EXPECT_GT(s, 0.5 * max) << g.output("contact", "sat");
+    EXPECT_LT(s, max) << g.output("contact", "sat");
+    for (const char* stage : {"moments", "msm"})
+        EXPECT_TRUE(g.full("contact", stage)) << stage << ": " << g.output("contact", stage);
+}
+
+}  // namespace sl

@@ -1,0 +1,71 @@
+// test_grader_support: what the grader tests share — making submissions from the reference
+// with some files replaced, running `shadowlab grade`, and reading its results.json.
+#pragma once
+
+#include "gl_test_support.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace sl::test {
+
+inline std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A submission folder: the reference's five files, with `replace` (file -> text) written over
+// them and the files in `drop` left out.
+inline fs::path makeSubmission(const std::string& name,
+                               const std::map<std::string, std::string>& replace = {},
+                               const std::vector<std::string>& drop = {}) {
+    fs::path dir = tempDir("grader_sub_" + name);
+    for (const char* f : {"moments.glsl", "gaussian_blur.comp", "sat.comp", "sat_lookup.glsl",
+                          "msm.glsl"}) {
+        if (std::find(drop.begin(), drop.end(), f) != drop.end()) continue;
+        auto it = replace.find(f);
+        std::ofstream(dir / f) << (it != replace.end() ? it->second
+                                                        : readText(root() / "reference" / f));
+    }
+    return dir;
+}
+
+struct Graded {
+    CommandResult run;
+    nlohmann::json results;
+    // Scores and outputs per "scene: stage".
+    double score(const std::string& scene, const std::string& stage) const {
+        for (const auto& t : results["tests"])
+            if (t["name"] == scene + ": " + stage) return t["score"].get<double>();
+        return -1.0;
+    }
+    double maxScore(const std::string& scene, const std::string& stage) const {
+        for (const auto& t : results["tests"])
+            if (t["name"] == scene + ": " + stage) return t["max_score"].get<double>();
+        return -1.0;
+    }
+    std::string output(const std::string& scene, const std::string& stage) const {
+        for (const auto& t : results["tests"])
+            if (t["name"] == scene + ": " + stage) return t["output"].get<std::string>();
+        return "";
+    }
+    bool full(const std::string& scene, const std::string& stage) const {
+        return maxScore(scene, stage) > 0 && score(scene, stage) == maxScore(scene, stage);
+    }
+};
+
+inline Graded grade(const std::string& args, const fs::path& out, const std::string& env = "") {
+    Graded g;
+    g.run = runCommand(env + (env.empty() ? "" : " ") + shadowlabBinary() + " grade " + args +
+                       " --out " + out.string());
+    std::ifstream in(out / "results.json");
+    if (in) g.results = nlohmann::json::parse(in, nullptr, false);
+    return g;
+}
+
+}  // namespace sl::test
