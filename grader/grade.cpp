@@ -141,6 +141,12 @@ public:
                 (stage == "gaussian" || stage == "sat" ? phaseB : phaseA).push_back(job);
             }
         }
+        // The robustness stage: one test, the submission's msm.glsl on the hard cases.
+        if (!scenes_.empty()) {
+            Job job = makeJob(0, "robustness", work / "robustness");
+            if (!intake_.has("msm.glsl")) job.missing = "msm.glsl: " + intake_.refused.at("msm.glsl");
+            phaseA.push_back(job);
+        }
         Stopwatch clock;
         runPhase(phaseA);
         clock.lap("renders without reference input");
@@ -248,6 +254,7 @@ private:
             t.output = "the render left no result";
             return t;
         }
+        if (job.stage == "robustness") return scoreRobustness(t, worker);
         // Stub notes naming the submission's files of this stage: not implemented.
         std::string notes;
         for (const auto& n : worker.value("stubNotes", std::vector<std::string>{}))
@@ -300,6 +307,25 @@ private:
         if (notes.empty() && fraction == 0.0 && detail.str().find("stub value") != std::string::npos)
             head = "not implemented (the output is the stub value -1)\n";
         t.output = head + detail.str();
+        return t;
+    }
+
+    // The hard-case catalogue: the fraction of cases with no NaN, Inf, out-of-range,
+    // non-monotone or off-bound G (docs/numerics.md), and the failing cases with their inputs.
+    TestResult scoreRobustness(TestResult t, const nlohmann::json& worker) {
+        t.scene = "hard cases";
+        t.hidden = false;
+        const auto& r = worker["robustness"];
+        const double fraction = r.value("score", 0.0);
+        const auto notes = worker.value("stubNotes", std::vector<std::string>{});
+        t.score = notes.empty() ? rubric_.points("robustness", fraction, 1.0) : 0.0;
+        t.metrics["robustness"] = r;
+        const auto [pass, zero] = rubric_.ramp("robustness");
+        std::string head = !notes.empty() ? "not implemented: " + notes.front() + "\n"
+                           : t.score >= 1.0 ? std::string("full marks\n")
+                           : fmt(100.0 * fraction, 2) + "% of the hard cases pass (full marks from " +
+                                 fmt(100.0 * pass, 1) + "%, none at " + fmt(100.0 * zero, 1) + "%)\n";
+        t.output = head + r.value("summary", std::string());
         return t;
     }
 

