@@ -32,7 +32,12 @@ public:
     explicit Renderer(ShaderLibrary library);
     ~Renderer();
 
-    RenderResult render(const Scene& scene, const PassPlan& plan);
+    // `moments`: light index -> a moment map to light with instead of rendering and filtering
+    // that light's shadow map (its shadow and filter passes are skipped; the map is sampled
+    // bilinearly, so give the scene filter `none`). The grader's msm stage uses it to feed the
+    // reference's filtered moments to a student's msm.glsl.
+    RenderResult render(const Scene& scene, const PassPlan& plan,
+                        const std::map<int, Image>* moments = nullptr);
 
     // One dispatch each, src -> dst (both RGBA32F, same size). Compile on first use.
     void copyPass(const Texture& src, const Texture& dst);

@@ -5,6 +5,8 @@
 // away; shadow and colour images are half floats (error ≤ 5e-4, 20× inside their tolerance).
 // Both encodings are deterministic, so `golden --check` can compare hashes with the manifest.
 #include "golden.h"
+#include "raw_image.h"
+#include "worker.h"
 
 #include "grader.h"
 #include "gl_context.h"
@@ -104,6 +106,19 @@ std::vector<std::string> makeGoldens(const GoldenOptions& o) {
             writeEncoded(pixels, file, image.rfind("moments", 0) == 0);
             images[image] = nlohmann::json{{"file", name + "/" + image + ".exr"},
                                            {"sha256", sha256File(file)}};
+        }
+        // The msm stage's reference: lit from the golden filtered moments as stored (rounded),
+        // exactly what a student's msm.glsl gets as input.
+        if (result.images.count("moments_filtered")) {
+            const Image stored = readAnyImage(dir / name / "moments_filtered.exr");
+            RenderResult isolated = renderFromMoments(renderer, scene, stored);
+            for (const auto& [image, pixels] : isolated.images) {
+                if (image.rfind("shadow", 0) != 0) continue;
+                const fs::path file = dir / name / ("msm_" + image + ".exr");
+                writeEncoded(pixels, file, false);
+                images["msm_" + image] = nlohmann::json{{"file", name + "/msm_" + image + ".exr"},
+                                                        {"sha256", sha256File(file)}};
+            }
         }
         manifest["scenes"][name] = nlohmann::json{{"scene_sha256", sha256File(path)}, {"images", images}};
         std::cerr << "golden: " << name << " (" << images.size() << " images)\n";

@@ -138,7 +138,9 @@ public:
                 for (const auto& f : neededFiles(stage, scenes_[i].filter))
                     if (!intake_.has(f) && job.missing.empty())
                         job.missing = f + ": " + intake_.refused.at(f);
-                (stage == "gaussian" || stage == "sat" ? phaseB : phaseA).push_back(job);
+                // These read a reference image as input: after the reference renders.
+                const bool needsInput = stage == "gaussian" || stage == "sat" || stage == "msm";
+                (needsInput ? phaseB : phaseA).push_back(job);
             }
         }
         // The robustness stage: one test, the submission's msm.glsl on the hard cases.
@@ -197,8 +199,8 @@ public:
 private:
     // Files a stage's render compiles from the submission.
     std::vector<std::string> neededFiles(const std::string& stage, const std::string& filter) const {
-        // Without reference/, msm runs on the submission's own moments and filter.
-        if (stage == "msm" && !haveRef_) return stageFiles("final", filter);
+        // Without reference/, lighting takes relativeDepth from the submission's moments.glsl.
+        if (stage == "msm" && !haveRef_) return {"msm.glsl", "moments.glsl"};
         return stageFiles(stage, filter);
     }
 
@@ -215,8 +217,9 @@ private:
             Job& j = jobs[k];
             if (!j.missing.empty()) continue;
             fs::create_directories(j.out);
+            const char* input = j.stage == "msm" ? "moments_filtered" : "moments_raw";
             specs.push_back(workerSpec(o_, scenes_[j.scene], j.stage,
-                                       referenceFile(j.scene, "moments_raw"), j.out));
+                                       referenceFile(j.scene, input), j.out));
             index.push_back(k);
         }
         auto results = runChildren(specs, {o_.timeoutSeconds, o_.memoryMb}, o_.jobs);
@@ -272,7 +275,8 @@ private:
         for (const auto& name : images) {
             Image ref, mine;
             try {
-                ref = readAnyImage(referenceFile(job.scene, name));
+                // msm is compared with the reference lit from the same moments (msm_<image>).
+                ref = readAnyImage(referenceFile(job.scene, job.stage == "msm" ? "msm_" + name : name));
             } catch (const std::exception& e) {
                 t.output = "no reference image " + name + " to compare with (" + e.what() + ")";
                 return t;

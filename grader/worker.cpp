@@ -4,7 +4,8 @@
 //   moments   shadow passes only, student moments.glsl            -> moments_raw
 //   gaussian  student blur on the reference moments (from a file)  -> moments_filtered
 //   sat       student sat.comp + sat_lookup.glsl on the same input  -> moments_filtered
-//   msm       student msm.glsl, reference moments and filter       -> shadow
+//   msm       student msm.glsl, lighting only, from the reference's
+//             filtered moments (a file)                           -> shadow
 //   robustness student msm.glsl on the hard-case catalogue (no scene) -> worker.json
 //   final     the whole submission                                 -> final
 //   reference the whole reference solution                         -> all of the above
@@ -46,6 +47,14 @@ ShaderLibrary makeLibrary(const WorkerArgs& a) {
 }
 
 }  // namespace
+
+RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered) {
+    scene.shadow.filter = FilterKind::None;
+    const PassPlan plan = planPasses(scene);
+    std::map<int, Image> moments;
+    if (!plan.shadowLights.empty()) moments[plan.shadowLights.front()] = filtered;
+    return renderer.render(scene, plan, &moments);
+}
 
 void runWorker(const WorkerArgs& a) {
     // Test hook (tests/test_grader_limits.cpp): make this stage's worker crash.
@@ -107,6 +116,10 @@ void runWorker(const WorkerArgs& a) {
         }
         gl::Finish();
         result.images["moments_filtered"] = dst.read();
+    } else if (a.stage == "msm") {
+        // Lighting only, from the reference's filtered moments (a file: isolated with the
+        // goldens alone), sampled bilinearly whatever the scene's filter.
+        result = renderFromMoments(renderer, scene, readAnyImage(a.input));
     } else {
         PassPlan plan;
         if (a.stage == "moments") {
@@ -119,6 +132,14 @@ void runWorker(const WorkerArgs& a) {
             plan = planPasses(scene);
         }
         result = renderer.render(scene, plan);
+        if (a.stage == "reference") {
+            // What the msm stage is compared with: the same lighting-only render, from these
+            // filtered moments, saved as "msm_<image>".
+            RenderResult isolated =
+                renderFromMoments(renderer, scene, result.images.at("moments_filtered"));
+            for (auto& [name, image] : isolated.images)
+                if (name.rfind("shadow", 0) == 0) result.images["msm_" + name] = std::move(image);
+        }
     }
     const std::string prefix = a.stage == "moments"    ? "moments_raw"
                                : a.stage == "msm"      ? "shadow"

@@ -1,6 +1,9 @@
 // worker.h: what one grader child process renders (the hidden `grade-worker` subcommand).
 #pragma once
 
+#include "renderer.h"
+#include "scene.h"
+
 #include <filesystem>
 #include <string>
 
@@ -11,7 +14,7 @@ struct WorkerArgs {
     std::string stage;       // reference | moments | gaussian | sat | msm | final
     std::string submission;  // staged submission folder
     std::string reference;   // reference solution folder ("" when only goldens exist)
-    std::string input;       // reference moments_raw EXR (gaussian, sat)
+    std::string input;       // reference moments_raw (gaussian, sat) or moments_filtered (msm)
     std::string out;         // folder for <image>.exr and worker.json
     std::string backend = "auto";
 };
@@ -19,5 +22,9 @@ struct WorkerArgs {
 // Renders and writes the stage's images. Throws (ShaderError for compile/link errors: the
 // command line turns it into exit code 3 and the mapped log on stderr).
 void runWorker(const WorkerArgs& args);
+
+// Lighting only, with `filtered` standing in for the first shadowing light's filtered moments
+// (bilinear, whatever the scene's filter): the msm stage, for the student and the reference.
+RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered);
 
 }  // namespace sl::grader
