@@ -197,3 +197,23 @@ TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
 }
 
 }  // namespace sl
+
+namespace sl {
+
+// Against the goldens alone (the student kit), msm still gets the reference's filtered moments
+// (from a file): a moments bug costs the moments stage, not msm — on a Gaussian and a SAT scene.
+TEST(Grader, MsmIsIsolatedAgainstGoldensToo) {
+    const fs::path mutant = test::root() / "tests/submissions/mutants/moments_powers_shifted";
+    fs::path sub = test::makeSubmission(
+        "msm_isolated", {{"moments.glsl", test::readText(mutant / "moments.glsl")}});
+    auto g = test::grade("--reference golden --submission " + sub.string() +
+                             " --scenes classic,contact --no-report",
+                         test::tempDir("grader_msm_isolated_out"));
+    ASSERT_FALSE(g.results.is_null()) << g.run.output;
+    for (const char* scene : {"classic", "contact"}) {
+        EXPECT_FALSE(g.full(scene, "moments")) << scene;
+        EXPECT_TRUE(g.full(scene, "msm")) << scene << ": " << g.output(scene, "msm");
+    }
+}
+
+}  // namespace sl
