@@ -1,0 +1,148 @@
+// Level 2 of the catalogue (see test_catalogue.cpp): every entry through `shadowlab grade`.
+#include "catalogue_entries.h"
+
+#include <unistd.h>
+
+namespace sl {
+namespace {
+
+// ------------------------------------------------------------------ level 2: the grader
+
+bool graderBuilt() {
+    static const bool built = [] {
+        test::CommandResult r = test::runCommand(test::shadowlabBinary() + " grade --help");
+        return r.exitCode == 0 && r.output.find("--submission") != std::string::npos;
+    }();
+    return built;
+}
+
+struct StageScore {
+    double score = 0.0, max = 0.0;
+    std::string output;
+    bool full() const { return score >= max - 1e-9; }
+};
+
+// Per stage tag ("stage:<stage>"), the scores of one results.json, summed over its tests.
+std::map<std::string, StageScore> stageScores(const json& results) {
+    std::map<std::string, StageScore> stages;
+    for (const json& t : results["tests"]) {
+        std::string stage;
+        if (t.contains("tags"))
+            for (const json& tag : t["tags"]) {
+                const std::string s = tag.get<std::string>();
+                if (s.rfind("stage:", 0) == 0) stage = s.substr(6);
+            }
+        if (stage.empty()) continue;
+        stages[stage].score += t.value("score", 0.0);
+        stages[stage].max += t.value("max_score", 0.0);
+        stages[stage].output += t.value("output", "");
+    }
+    return stages;
+}
+
+// Every entry through `shadowlab grade`. Each entry is a complete submission: the reference's
+// five files with the entry's file(s) on top (a folder with the one file alone would, rightly,
+// grade the other stages "not submitted"). Graded on its first scene (the catalogue lists
+// first a scene where the bug shows), against the live reference, without the HTML report,
+// as one --batch per scene: one process for all entries (~40-80 s for the 30 entries on 2
+// busy cores, against ~3 min for 30 single `grade --submission` runs). --timeout 120: a busy
+// shared machine must not turn a slow render into a "timed out" zero.
+TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
+    if (!graderBuilt()) GTEST_SKIP() << "grader not built yet";
+    // Per process: a concurrent run of the suite (several people share build/) must not
+    // delete this one's folders.
+    const fs::path dir = test::tempDir("catalogue_grade_" + std::to_string(getpid()));
+    std::string finalLosses;  // alternatives that lose points on the end-to-end image only
+    std::map<std::string, std::vector<const Entry*>> byScene;
+    for (const Entry& e : catalogue()) {
+        ASSERT_FALSE(e.scenes.empty()) << e.name;
+        byScene[e.scenes.front()].push_back(&e);
+    }
+    for (const auto& [scene, entries] : byScene) {
+        const fs::path batch = dir / ("submissions_" + scene), out = dir / ("out_" + scene);
+        for (const Entry* e : entries) {
+            const fs::path submission = batch / e->name;
+            fs::create_directories(submission);
+            for (const auto& name : stageFileNames())
+                fs::copy_file(repoRoot() / "reference" / name, submission / name,
+                              fs::copy_options::overwrite_existing);
+            for (const auto& file : e->files)
+                fs::copy_file(Entry::submissionsDir() / file,
+                              submission / fs::path(file).filename(),
+                              fs::copy_options::overwrite_existing);
+        }
+        const auto start = std::chrono::steady_clock::now();
+        const test::CommandResult run = test::runCommand(
+            test::shadowlabBinary() + " grade --batch '" + batch.string() + "' --out '" +
+            out.string() + "' --scenes " + scene + " --reference live --no-report -j 2 --timeout 120");
+        std::printf("[catalogue] grade --batch of %zu entries on %s: %.1f s, exit %d\n",
+                    entries.size(), scene.c_str(),
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                        .count(),
+                    run.exitCode);
+
+        for (const Entry* e : entries) {
+            SCOPED_TRACE(e->name + " (" + e->kind + ", stage " + e->stage + ", scene " + scene +
+                         ")");
+            std::ifstream in(out / e->name / "results.json");
+            if (!in) {
+                ADD_FAILURE() << "no results.json; exit " << run.exitCode << "\n" << run.output;
+                continue;
+            }
+            const json results = json::parse(in, nullptr, false);
+            if (!results.is_object() || !results.contains("tests")) {
+                ADD_FAILURE() << "results.json without tests[]";
+                continue;
+            }
+            const auto stages = stageScores(results);
+            EXPECT_TRUE(stages.count(e->stage)) << "no test tagged stage:" << e->stage;
+            std::string table;
+            for (const auto& [stage, s] : stages) {
+                char buf[96];
+                std::snprintf(buf, sizeof buf, "%s %.2f/%.2f  ", stage.c_str(), s.score, s.max);
+                table += buf;
+            }
+            std::printf("[catalogue] grade %-31s %-11s %s\n", e->name.c_str(), e->kind.c_str(),
+                        table.c_str());
+            for (const auto& [stage, s] : stages) {
+                SCOPED_TRACE("stage " + stage + ": " + std::to_string(s.score) + " / " +
+                             std::to_string(s.max) + "\n" + s.output);
+                if (e->mutant()) {
+                    // The end-to-end "final" stage may lose points too: not checked. Nor may
+                    // "robustness" for an msm mutant: it probes the same msm.glsl.
+                    const bool sameFile = e->stage == "msm" && stage == "robustness";
+                    if (stage == e->stage) {
+                        EXPECT_FALSE(s.full()) << "a mutant must lose points on its own stage";
+                    } else if (stage != "final" && !sameFile) {
+                        EXPECT_TRUE(s.full()) << "a mutant must not lose points on another stage";
+                    }
+                } else if (stage == "robustness" && e->stage == "msm") {
+                    // Correct on every scene, yet a solve may be less stable on the adversarial
+                    // hard cases (msm_cramer: non-monotone on 16 of 289): that is what the
+                    // robustness stage is for, so it is reported, not required (catalogue.md).
+                    if (!s.full()) std::printf("[catalogue] %s: robustness %.2f / %.2f\n",
+                                               e->name.c_str(), s.score, s.max);
+                } else if (stage != "final") {
+                    EXPECT_TRUE(s.full()) << "an alternative must score full marks";
+                } else if (!s.full()) {
+                    finalLosses += e->name + ": final " + std::to_string(s.score) + " / " +
+                                   std::to_string(s.max) + " on " + scene + "; ";
+                }
+            }
+        }
+    }
+    if (!HasFailure()) fs::remove_all(dir);  // kept for inspection when something failed
+    if (!finalLosses.empty() && !HasFailure()) {
+        // Every isolated stage passed. What is left is for the grader to fix: through a SAT,
+        // the end-to-end shadow is chaotic in float rounding. Even sat_lookup_fp_order (box
+        // means within 2e-5 of the reference's) flips G by up to 0.99 on 1-3 % of the contact
+        // and wide_blur pixels, so "final" cannot ask for 99.5 % of the pixels within
+        // tolerance of the reference there. (docs/catalogue.md, "Known grader issue".)
+        GTEST_SKIP() << "known grader issue: correct alternatives lose points on the end-to-end "
+                        "final image only (every isolated stage scores as required): "
+                     << finalLosses;
+    }
+}
+
+}  // namespace
+}  // namespace sl
