@@ -73,18 +73,35 @@ std::vector<float> Renderer::gaussianWeights(int radius, float sigma) {
     return out;
 }
 
-GlProgram& Renderer::program(const std::string& key, const std::string& first,
-                             const std::string& fragment,
+GlProgram& Renderer::program(const std::string& first, const std::string& fragment,
                              const std::vector<std::string>& defines) {
-    std::string fullKey = key;  // one program per permutation
-    for (const auto& d : defines) fullKey += "|" + d;
-    auto& slot = programs_[fullKey];
+    std::string key = first + "|" + fragment;
+    for (const auto& d : defines) key += "|" + d;
+    auto& slot = programs_[key];
     if (!slot) {
         slot = std::make_unique<GlProgram>(
             fragment.empty() ? GlProgram::compute(library_, first, defines)
                              : GlProgram::graphics(library_, first, fragment, defines));
     }
     return *slot;
+}
+
+GlProgram& Renderer::passProgram(PassKind kind, int blurRadius,
+                                 const std::vector<std::string>& defines) {
+    switch (kind) {
+        case PassKind::Shadow: return program("scene.vert", "shadow_moments.frag", defines);
+        case PassKind::GaussianX:
+        case PassKind::GaussianY:
+            // The radius is a compile-time constant (one program per radius): llvmpipe then
+            // unrolls the taps and keeps the window in registers (docs/performance.md).
+            return program("gaussian_blur.comp", "",
+                           {"SL_BLUR_RADIUS=" + std::to_string(blurRadius)});
+        case PassKind::SatRows:
+        case PassKind::SatColumns: return program("sat.comp", "", {});
+        case PassKind::SatResolve: return program("sat_resolve.comp", "", {});
+        case PassKind::Lighting: return program("scene.vert", "lighting.frag", defines);
+    }
+    throw std::logic_error("no program for this pass");
 }
 
 void Renderer::dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction,
@@ -99,7 +116,7 @@ void Renderer::dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 dir
 }
 
 void Renderer::copyPass(const Texture& src, const Texture& dst) {
-    GlProgram& p = program("copy", "copy.comp", "", {});
+    GlProgram& p = program("copy.comp", "", {});
     p.use();
     p.set("uImageSize", glm::ivec2(src.width, src.height));
     gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
@@ -109,12 +126,12 @@ void Renderer::copyPass(const Texture& src, const Texture& dst) {
 
 void Renderer::gaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
                             glm::ivec2 direction) {
-    // The radius is a compile-time constant (one program per radius): llvmpipe then unrolls
-    // the taps and keeps the window in registers, which halves the cost of a pass.
-    const std::string r = std::to_string(radius);
-    GlProgram& p = program("gaussian_r" + r, "gaussian_blur.comp", "", {"SL_BLUR_RADIUS=" + r});
-    std::vector<float> weights = gaussianWeights(radius, sigma);
-    BufferHandle buffer = createBuffer(weights.data(), GLsizeiptr(weights.size() * sizeof(float)));
+    GlProgram& p = passProgram(PassKind::GaussianX, radius, {});
+    BufferHandle& buffer = gaussianWeights_[{radius, sigma}];  // made once, not per pass
+    if (!buffer) {
+        std::vector<float> weights = gaussianWeights(radius, sigma);
+        buffer = createBuffer(weights.data(), GLsizeiptr(weights.size() * sizeof(float)));
+    }
     p.use();
     p.set("uRadius", radius);
     p.set("uDirection", direction);
@@ -133,7 +150,7 @@ void Renderer::gaussianPass(const Texture& src, const Texture& dst, int radius, 
 }
 
 void Renderer::satPass(const Texture& src, const Texture& dst, glm::ivec2 direction) {
-    GlProgram& p = program("sat", "sat.comp", "", {});
+    GlProgram& p = passProgram(PassKind::SatRows, 0, {});
     p.use();
     p.set("uDirection", direction);
     p.set("uImageSize", glm::ivec2(src.width, src.height));
@@ -143,7 +160,7 @@ void Renderer::satPass(const Texture& src, const Texture& dst, glm::ivec2 direct
 }
 
 void Renderer::satResolvePass(const Texture& sat, const Texture& dst, float kernelTexels) {
-    GlProgram& p = program("sat_resolve", "sat_resolve.comp", "", {});
+    GlProgram& p = passProgram(PassKind::SatResolve, 0, {});
     p.use();
     p.set("uSat", 0);
     p.set("uSatKernel", kernelTexels);
@@ -190,21 +207,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     std::map<int, CameraTargets> targets;
 
     // Compile first, so that pass times measure rendering, not the driver's compiler.
-    for (const PlannedPass& pass : plan.passes) {
-        switch (pass.kind) {
-            case PassKind::Shadow: program("shadow", "scene.vert", "shadow_moments.frag", defines); break;
-            case PassKind::GaussianX:
-            case PassKind::GaussianY: {
-                const std::string r = std::to_string(fx.gaussianRadius);
-                program("gaussian_r" + r, "gaussian_blur.comp", "", {"SL_BLUR_RADIUS=" + r});
-                break;
-            }
-            case PassKind::SatRows:
-            case PassKind::SatColumns: program("sat", "sat.comp", "", {}); break;
-            case PassKind::SatResolve: program("sat_resolve", "sat_resolve.comp", "", {}); break;
-            case PassKind::Lighting: program("lighting", "scene.vert", "lighting.frag", defines); break;
-        }
-    }
+    for (const PlannedPass& pass : plan.passes) passProgram(pass.kind, fx.gaussianRadius, defines);
 
     gl::Enable(GL_DEPTH_TEST);
     gl::DepthFunc(GL_LESS);
@@ -224,7 +227,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 gl::ClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
                 gl::BindFramebuffer(GL_FRAMEBUFFER, fb.id());
                 gl::Viewport(0, 0, n, n);
-                GlProgram& p = program("shadow", "scene.vert", "shadow_moments.frag", defines);
+                GlProgram& p = passProgram(PassKind::Shadow, 0, defines);
                 p.use();
                 p.set("uViewProjection", m->view.viewProjection);
                 p.set("uLightEye", m->view.eye);
@@ -262,7 +265,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 gl::ClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
                 gl::BindFramebuffer(GL_FRAMEBUFFER, fb.id());
                 gl::Viewport(0, 0, cam.width, cam.height);
-                GlProgram& p = program("lighting", "scene.vert", "lighting.frag", defines);
+                GlProgram& p = passProgram(PassKind::Lighting, 0, defines);
                 p.use();
                 CameraView cv = computeCameraView(cam);
                 p.set("uViewProjection", cv.viewProjection);

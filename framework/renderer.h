@@ -53,12 +53,17 @@ public:
     static std::vector<float> gaussianWeights(int radius, float sigma);
 
 private:
-    GlProgram& program(const std::string& key, const std::string& vertexOrCompute,
-                       const std::string& fragment, const std::vector<std::string>& defines);
+    // One compiled program per (files, defines), built on first use.
+    GlProgram& program(const std::string& vertexOrCompute, const std::string& fragment,
+                       const std::vector<std::string>& defines);
+    // The program a pass kind runs: the one place that names its files and permutation.
+    // `blurRadius`: Gaussian passes; `defines`: the technique/filter ones of the scene.
+    GlProgram& passProgram(PassKind kind, int blurRadius, const std::vector<std::string>& defines);
     void dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction, bool wholeLine);
 
     ShaderLibrary library_;
     std::map<std::string, std::unique_ptr<GlProgram>> programs_;
+    std::map<std::pair<int, float>, BufferHandle> gaussianWeights_;  // (radius, sigma) -> SSBO
 };
 
 }  // namespace sl

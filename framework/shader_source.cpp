@@ -1,6 +1,7 @@
 // ShaderLibrary: #include resolution and #line bookkeeping (see shader_source.h).
 #include "shader_source.h"
 
+#include <algorithm>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -20,9 +21,22 @@ ShaderLibrary::ShaderLibrary(std::map<std::string, fs::path> stageDirs,
       displayRoot_(fs::weakly_canonical(displayRoot)) {}
 
 ShaderLibrary ShaderLibrary::forSolution(const fs::path& solutionDir, const fs::path& repoRoot) {
+    return mixed(solutionDir, {}, repoRoot);
+}
+
+ShaderLibrary ShaderLibrary::mixed(const fs::path& baseDir,
+                                   const std::map<std::string, fs::path>& overrides,
+                                   const fs::path& repoRoot, const fs::path& displayRoot) {
     std::map<std::string, fs::path> stages;
-    for (const auto& name : stageFileNames()) stages[name] = solutionDir;
-    return ShaderLibrary(stages, {solutionDir, repoRoot / "shaders"}, repoRoot);
+    for (const auto& name : stageFileNames()) stages[name] = baseDir;
+    std::vector<fs::path> search;
+    for (const auto& [name, dir] : overrides) {
+        stages[name] = dir;
+        if (std::find(search.begin(), search.end(), dir) == search.end()) search.push_back(dir);
+    }
+    search.push_back(baseDir);
+    search.push_back(repoRoot / "shaders");
+    return ShaderLibrary(stages, search, displayRoot.empty() ? repoRoot : displayRoot);
 }
 
 std::string ShaderLibrary::displayPath(const fs::path& path) const {

@@ -45,6 +45,12 @@ public:
 
     // All five stages from one solution folder, then shaders/ under the repository root.
     static ShaderLibrary forSolution(const fs::path& solutionDir, const fs::path& repoRoot);
+    // The stages of `baseDir`, except the files named in `overrides` (stage file -> folder):
+    // how the grader and the tests grade one stage of a submission on reference inputs.
+    // Other includes are looked up in the override folders, then `baseDir`, then shaders/.
+    static ShaderLibrary mixed(const fs::path& baseDir,
+                               const std::map<std::string, fs::path>& overrides,
+                               const fs::path& repoRoot, const fs::path& displayRoot = {});
 
     // `defines` become "#define NAME" or "#define NAME VALUE" lines after #version.
     AssembledShader assemble(const std::string& fileName,

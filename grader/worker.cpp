@@ -12,6 +12,8 @@
 // The images go out as .raw (raw_image.h). The filter stages read their input from a file, so they are isolated with goldens alone.
 #include "worker.h"
 
+#include "grader.h"
+
 #include "gl_context.h"
 #include "msm_robustness.h"
 #include "pass_plan.h"
@@ -33,17 +35,13 @@ namespace {
 ShaderLibrary makeLibrary(const WorkerArgs& a) {
     const fs::path sub = a.submission;
     const fs::path other = a.reference.empty() ? sub : fs::path(a.reference);
-    std::map<std::string, fs::path> dirs;
-    for (const auto& name : stageFileNames()) dirs[name] = other;
-    auto mine = [&](const std::string& name) { dirs[name] = sub; };
-    if (a.stage == "moments") mine("moments.glsl");
-    if (a.stage == "gaussian") mine("gaussian_blur.comp");
-    if (a.stage == "sat") mine("sat.comp"), mine("sat_lookup.glsl");
-    if (a.stage == "msm" || a.stage == "robustness") mine("msm.glsl");
+    std::map<std::string, fs::path> mine;
     if (a.stage == "final")
-        for (const auto& name : stageFileNames()) mine(name);
+        for (const auto& name : stageFileNames()) mine[name] = sub;
+    else if (a.stage != "reference")
+        for (const auto& name : stageFiles(a.stage, "")) mine[name] = sub;
     // Student paths show as "submission/msm.glsl:42".
-    return ShaderLibrary(dirs, {sub, repoRoot() / "shaders"}, sub.parent_path());
+    return ShaderLibrary::mixed(other, mine, repoRoot(), sub.parent_path());
 }
 
 }  // namespace
@@ -141,11 +139,7 @@ void runWorker(const WorkerArgs& a) {
                 if (name.rfind("shadow", 0) == 0) result.images["msm_" + name] = std::move(image);
         }
     }
-    const std::string prefix = a.stage == "moments"    ? "moments_raw"
-                               : a.stage == "msm"      ? "shadow"
-                               : a.stage == "final"    ? "final"
-                               : a.stage == "reference" ? ""
-                                                        : "moments_filtered";
+    const std::string prefix = a.stage == "reference" ? "" : stageImage(a.stage);
     fs::create_directories(a.out);
     nlohmann::json written = nlohmann::json::array();
     for (const auto& [name, image] : result.images) {

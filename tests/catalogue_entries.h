@@ -32,7 +32,7 @@ constexpr double kMutantMinFraction = 1e-3;
 
 struct Entry {
     std::string name, kind, stage, file;  // file: relative to tests/submissions/
-    std::vector<std::string> files;       // every file of the folder (file alone if absent)
+    std::vector<std::string> files;       // the submitted files: the folder's, + a SAT partner from sat_base/
     std::vector<std::string> scenes;
     std::string models;
     bool mutant() const { return kind == "mutant"; }
@@ -88,17 +88,15 @@ std::string stageImage(const std::string& stage) {
     return "moments_filtered";
 }
 
-// Reference stage files, with the entry's file(s) taken from its folder instead. (A SAT entry
+// Reference stage files, with the entry's file(s) taken from where it lists them. (A SAT entry
 // carries the pair sat.comp + sat_lookup.glsl: they must agree on the table's format.)
 ShaderLibrary entryLibrary(const Entry& entry) {
-    const fs::path ref = repoRoot() / "reference";
-    std::map<std::string, fs::path> stages;
-    for (const auto& name : stageFileNames()) stages[name] = ref;
+    std::map<std::string, fs::path> overrides;
     for (const auto& file : entry.files) {
         const fs::path path = Entry::submissionsDir() / file;
-        stages[path.filename().string()] = path.parent_path();
+        overrides[path.filename().string()] = path.parent_path();
     }
-    return ShaderLibrary(stages, {ref, repoRoot() / "shaders"}, repoRoot());
+    return ShaderLibrary::mixed(repoRoot() / "reference", overrides, repoRoot());
 }
 
 const Scene& scene(const std::string& name) {

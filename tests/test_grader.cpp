@@ -181,12 +181,13 @@ TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
 // The robustness stage (issue 4): the fragile variants of msm.glsl lose points there, with the
 // failing hard cases and their inputs listed; the reference scores full.
 TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
-    for (const char* variant : {"no_bias", "unguarded"}) {
-        const fs::path dir = test::root() / "tests/submissions/fragile" / variant;
-        fs::path sub = test::makeSubmission(std::string("fragile_") + variant,
+    for (const char* variant : {"mutants/msm_no_moment_bias", "fragile/unguarded"}) {
+        const fs::path dir = test::root() / "tests/submissions" / variant;
+        const std::string tag = dir.filename().string();
+        fs::path sub = test::makeSubmission("fragile_" + tag,
                                             {{"msm.glsl", test::readText(dir / "msm.glsl")}});
         auto g = test::grade("--submission " + sub.string() + " --scenes classic --no-report",
-                             test::tempDir(std::string("grader_fragile_out_") + variant));
+                             test::tempDir("grader_fragile_out_" + tag));
         ASSERT_FALSE(g.results.is_null()) << g.run.output;
         const std::string out = g.output("hard cases", "robustness");
         EXPECT_LT(g.score("hard cases", "robustness"), g.maxScore("hard cases", "robustness"))

@@ -1,6 +1,6 @@
 // Deliberately fragile variants of the reference (tests/submissions/fragile/) fail where
 // docs/numerics.md says they do, while the reference passes the same checks:
-//   no_bias/msm.glsl      no moment bias: far off on nearly singular / quantised moments;
+//   mutants/msm_no_moment_bias/msm.glsl  no moment bias: far off on nearly singular / quantised moments;
 //   unguarded/msm.glsl    no pivot floors, unguarded sqrt and divisions: G outside [0, 1];
 //   naive_sat/            plain float32 SAT: small boxes far from the origin are wrong.
 #include "gl_test_support.h"
@@ -13,13 +13,12 @@
 namespace sl {
 namespace {
 
-// The reference with some stages taken from a fragile variant's folder.
+// The reference with some stages taken from a variant's folder (under tests/submissions/).
 ShaderLibrary withFragile(const std::string& variant, const std::vector<std::string>& files) {
-    const fs::path dir = test::root() / "tests/submissions/fragile" / variant;
-    std::map<std::string, fs::path> stages;
-    for (const auto& name : stageFileNames()) stages[name] = test::root() / "reference";
-    for (const auto& f : files) stages[f] = dir;
-    return ShaderLibrary(stages, {dir, test::root() / "reference", test::root() / "shaders"}, test::root());
+    const fs::path dir = test::root() / "tests/submissions" / variant;
+    std::map<std::string, fs::path> overrides;
+    for (const auto& f : files) overrides[f] = dir;
+    return ShaderLibrary::mixed(test::root() / "reference", overrides, test::root());
 }
 
 std::set<std::string> failingSets(const RobustnessReport& r) {
@@ -33,7 +32,7 @@ std::set<std::string> failingSets(const RobustnessReport& r) {
 
 TEST(NumericsFragile, NoMomentBiasFailsOnSingularDistributions) {
     test::sharedContext();
-    const RobustnessReport r = probeMsmRobustness(withFragile("no_bias", {"msm.glsl"}));
+    const RobustnessReport r = probeMsmRobustness(withFragile("mutants/msm_no_moment_bias", {"msm.glsl"}));
     std::printf("no_bias: %s", r.summary(8).c_str());
     EXPECT_LT(r.score, 0.95);
     // Nearly singular B (two close depths, narrow clusters) and moments pushed outside the
@@ -48,7 +47,7 @@ TEST(NumericsFragile, NoMomentBiasFailsOnSingularDistributions) {
 
 TEST(NumericsFragile, UnguardedSquareRootsAndDivisionsLeaveTheRange) {
     test::sharedContext();
-    const RobustnessReport r = probeMsmRobustness(withFragile("unguarded", {"msm.glsl"}));
+    const RobustnessReport r = probeMsmRobustness(withFragile("fragile/unguarded", {"msm.glsl"}));
     std::printf("unguarded: %s", r.summary(8).c_str());
     // Depth near 1 (D33 ~ 1e-11, below float rounding) and depth at 0 only (D33 = 0): the
     // unfloored pivots give huge or infinite c, and G leaves [0, 1] or is NaN; where it is
@@ -80,7 +79,7 @@ TEST(NumericsFragile, NaiveFloatSatIsWrongOnSmallBoxesFarFromTheOrigin) {
             for (int c = 0; c < 4; ++c) e = std::max(e, double(std::abs(v[c] - map.pixels[size_t(c)])));
         return e;
     };
-    const double naive = worst(withFragile("naive_sat", {"sat.comp", "sat_lookup.glsl"}));
+    const double naive = worst(withFragile("fragile/naive_sat", {"sat.comp", "sat_lookup.glsl"}));
     const double reference = worst(test::library("reference"));
     std::printf("flat 2048² map, 1-texel boxes at the far corner: naive %.2e, reference %.2e\n", naive, reference);
     EXPECT_GT(naive, 1e-2);      // visible: ~2.5 of the 8 bits of an 8-bit shadow are noise

@@ -51,10 +51,8 @@ struct Row {
 ShaderLibrary naiveSatLibrary() {
     // The reference with the fragile variant's sat.comp + sat_lookup.glsl (graded as a pair).
     const fs::path fragile = test::root() / "tests/submissions/fragile/naive_sat";
-    std::map<std::string, fs::path> stages;
-    for (const auto& name : stageFileNames()) stages[name] = test::root() / "reference";
-    stages["sat.comp"] = stages["sat_lookup.glsl"] = fragile;
-    return ShaderLibrary(stages, {fragile, test::root() / "reference", test::root() / "shaders"}, test::root());
+    return ShaderLibrary::mixed(test::root() / "reference",
+                                {{"sat.comp", fragile}, {"sat_lookup.glsl", fragile}}, test::root());
 }
 
 std::vector<Row> measure(int n) {

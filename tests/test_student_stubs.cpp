@@ -36,14 +36,11 @@ TEST(StudentStubs, SatSceneReportsTheScanAndTheLookup) {
 }
 
 TEST(StudentStubs, OneImplementedStageIsNoLongerReported) {
-    // A student folder whose moments.glsl is solved: only the others remain.
-    fs::path dir = test::tempDir("one_stage_done");
-    for (const auto& name : stageFileNames())
-        fs::copy_file(test::root() / "student" / name, dir / name);
-    fs::copy_file(test::root() / "reference" / "moments.glsl", dir / "moments.glsl",
-                  fs::copy_options::overwrite_existing);
+    // The student's stages with moments.glsl solved: only the others remain.
     test::sharedContext();
-    Renderer renderer(ShaderLibrary::forSolution(dir, test::root()));
+    Renderer renderer(ShaderLibrary::mixed(test::root() / "student",
+                                           {{"moments.glsl", test::root() / "reference"}},
+                                           test::root()));
     Scene scene = loadScene(test::scenePath("classic"));
     RenderResult r = renderer.render(scene, planPasses(scene));
     EXPECT_FALSE(mentions(r.stubNotes, "moments.glsl")) << testing::PrintToString(r.stubNotes);
@@ -51,13 +48,10 @@ TEST(StudentStubs, OneImplementedStageIsNoLongerReported) {
 }
 
 TEST(StudentStubs, SatLookupStubIsReportedOnceTheScanWorks) {
-    fs::path dir = test::tempDir("lookup_stub");
-    for (const auto& name : stageFileNames())
-        fs::copy_file(test::root() / "reference" / name, dir / name);
-    fs::copy_file(test::root() / "student" / "sat_lookup.glsl", dir / "sat_lookup.glsl",
-                  fs::copy_options::overwrite_existing);
     test::sharedContext();
-    Renderer renderer(ShaderLibrary::forSolution(dir, test::root()));
+    Renderer renderer(ShaderLibrary::mixed(test::root() / "reference",
+                                           {{"sat_lookup.glsl", test::root() / "student"}},
+                                           test::root()));
     Scene scene = loadScene(test::scenePath("contact"));
     RenderResult r = renderer.render(scene, planPasses(scene));
     EXPECT_TRUE(mentions(r.stubNotes, "sat_lookup.glsl")) << testing::PrintToString(r.stubNotes);

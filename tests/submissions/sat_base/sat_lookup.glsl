@@ -1,5 +1,5 @@
 // sat_lookup.glsl: box average of the moment map from its summed-area table.
-// Reference solution. Stage contract: docs/stage_contract.md.
+// The catalogue's SAT base pair (an untiled offset table, an earlier reference): each SAT entry changes one file of the pair and takes the other from here.
 //
 // Included by the lighting pass (and by shaders/sat_resolve.comp) when the filter is a SAT.
 // `sat` is the table T written by sat.comp, bound with nearest filtering, read with texelFetch.

@@ -1,5 +1,5 @@
 // sat.comp: one pass of a summed-area table: inclusive prefix sums along rows or columns.
-// Reference solution. Stage contract: docs/stage_contract.md.
+// The catalogue's SAT base pair (an untiled offset table, an earlier reference): each SAT entry changes one file of the pair and takes the other from here.
 //
 // Dispatched twice: along rows (uDirection = (1, 0)), then along the columns of the result
 // (uDirection = (0, 1)). Afterwards dst holds the summed-area table Σ_{i <= x, j <= y}
