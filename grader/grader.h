@@ -18,7 +18,7 @@ namespace sl::grader {
 namespace fs = std::filesystem;
 
 // The graded stages, in report order. Each is scored on reference inputs except `final`.
-// robustness: msm.glsl on the hard-case catalogue (framework/msm_robustness.h), one test.
+// robustness: msm.glsl on the hard-case catalogue (framework/numerics/msm_robustness.h), one test.
 const std::vector<std::string>& stageNames();  // moments, gaussian, sat, msm, robustness, final
 // The submission files a stage compiles (final: the files the scene's pipeline uses).
 std::vector<std::string> stageFiles(const std::string& stage, const std::string& filter);

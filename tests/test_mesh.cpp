@@ -1,4 +1,4 @@
-// Tests of the scene's geometry (framework/mesh.cpp): every shape has unit normals and
+// Tests of the scene's geometry (framework/scene/mesh.cpp): every shape has unit normals and
 // triangles wound counter-clockwise seen from outside, closed shapes are watertight and
 // enclose the right volume, and objects are placed by T * Rz * Ry * Rx * S.
 #include "mesh.h"

@@ -1,4 +1,4 @@
-// The hard-case catalogue (framework/probe_cases.h, docs/numerics.md): its expected values
+// The hard-case catalogue (framework/numerics/probe_cases.h, docs/numerics.md): its expected values
 // against the analytic CDF of point masses, the reference on the GPU (through the grader's
 // robustness stage) and its float32 CPU mirror, and `shadowlab probe` on its CSV files.
 #include "gl_test_support.h"

@@ -1,4 +1,4 @@
-// Tests of the scene format (framework/scene_loader.cpp): every public scene loads and
+// Tests of the scene format (framework/scene/scene_loader.cpp): every public scene loads and
 // carries probes, and a malformed scene fails with one line that names the file, the JSON
 // path, what was expected and what was found. The shapes themselves: test_mesh.cpp.
 #include "mesh.h"
