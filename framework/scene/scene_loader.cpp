@@ -65,7 +65,14 @@ Light readLight(const Reader& R, const Node& n) {
         R.fail(n["target"], "a point different from the position");
     if (auto v = n["color"]) l.color = R.vec3(v, Range::atLeast(0));
     if (auto v = n["intensity"]) l.intensity = float(R.number(v, Range::atLeast(0)));
-    if (auto v = n["size"]) l.size = float(R.number(v, Range::atLeast(0)));
+    if (auto v = n["size"]; v && v.v->is_array()) {  // [w, h]: a rectangular emitter
+        if (v.v->size() != 2) R.fail(v, "a number >= 0 (disk diameter) or [width, height]");
+        l.rectangle = {float(R.number(v[size_t(0)], Range::positive())),
+                       float(R.number(v[size_t(1)], Range::positive()))};
+        l.size = std::max(l.rectangle.x, l.rectangle.y);
+    } else if (v) {
+        l.size = float(R.number(v, Range::atLeast(0)));
+    }
     if (auto v = n["castsShadows"]) l.castsShadows = R.boolean(v);
     if (auto v = n["coneDegrees"]) l.coneDegrees = float(R.number(v, Range::open(0, 170)));
     if (auto v = n["extent"]) l.extent = float(R.number(v, Range::positive()));

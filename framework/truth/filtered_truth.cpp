@@ -1,0 +1,108 @@
+// filtered_truth: same-kernel PCF of a shadow map in double (see filtered_truth.h).
+#include "filtered_truth.h"
+
+#include "light_view.h"
+#include "mesh.h"
+#include "renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sl {
+namespace {
+
+// One axis of the kernel as (texel index, weight) taps, indices already clamped or clipped.
+struct Tap { int index; double weight; };
+
+std::vector<Tap> axisTaps(double coord, int n, const FilterKernel& k,
+                          const std::vector<double>& gauss) {
+    std::vector<Tap> taps;
+    if (k.kind == FilterKind::Sat) {  // box in texel units, clipped to [0, n]
+        const double lo = std::clamp(coord - 0.5 * k.boxTexels, 0.0, double(n));
+        const double hi = std::clamp(coord + 0.5 * k.boxTexels, 0.0, double(n));
+        if (hi <= lo) return taps;
+        for (int i = int(std::floor(lo)); i < int(std::ceil(hi)) && i < n; ++i) {
+            const double cover = std::min(hi, i + 1.0) - std::max(lo, double(i));
+            if (cover > 0) taps.push_back({i, cover / (hi - lo)});
+        }
+        return taps;
+    }
+    // Bilinear fetch (GL_LINEAR, clamp to edge) of the Gaussian-filtered map.
+    const double s = coord - 0.5;
+    const int i0 = int(std::floor(s));
+    const double f = s - i0;
+    const int r = int(gauss.size()) - 1;
+    for (int b = 0; b < 2; ++b) {
+        const double wb = b == 0 ? 1.0 - f : f;
+        if (wb == 0.0) continue;
+        const int centre = std::clamp(i0 + b, 0, n - 1);
+        for (int a = -r; a <= r; ++a)
+            taps.push_back({std::clamp(centre + a, 0, n - 1), wb * gauss[size_t(std::abs(a))]});
+    }
+    return taps;
+}
+
+std::vector<double> gaussOf(const FilterKernel& k) {
+    if (k.kind != FilterKind::Gaussian || k.radius <= 0) return {1.0};
+    // The renderer's own normalisation (float weights, as the GPU sees them), held in double.
+    std::vector<double> out;
+    for (float w : Renderer::gaussianWeights(k.radius, k.sigma)) out.push_back(w);
+    return out;
+}
+
+double filtered(const Image& depth, glm::dvec2 uv, double zf, const FilterKernel& k,
+                const std::vector<double>& gauss) {
+    const auto tx = axisTaps(uv.x * depth.width, depth.width, k, gauss);
+    const auto ty = axisTaps(uv.y * depth.height, depth.height, k, gauss);
+    double g = 0.0;
+    for (const Tap& b : ty) {
+        double row = 0.0;
+        for (const Tap& a : tx)
+            if (double(depth.at(a.index, b.index, 0)) < zf) row += a.weight;
+        g += b.weight * row;
+    }
+    return g;
+}
+
+}  // namespace
+
+FilterKernel kernelOf(const ShadowEffect& fx) {
+    FilterKernel k;
+    k.kind = fx.filter;
+    k.radius = fx.gaussianRadius;
+    k.sigma = fx.gaussianSigma;
+    k.boxTexels = fx.satKernelTexels;
+    return k;
+}
+
+double filteredShadow(const Image& depth, glm::dvec2 uv, double zf, const FilterKernel& kernel) {
+    return filtered(depth, uv, zf, kernel, gaussOf(kernel));
+}
+
+Image filteredTruth(const Scene& scene, const VisiblePoints& points, const Image& reached,
+                    int lightIndex, const Image& depth, const FilterKernel& kernel) {
+    std::vector<Bounds> bounds;
+    for (const Object& o : scene.objects) bounds.push_back(worldBounds(buildMesh(o, scene), objectToWorld(o)));
+    const LightView view = computeLightView(scene.lights.at(size_t(lightIndex)), scene.shadow, bounds);
+    const glm::dmat4 vp(view.viewProjection);
+    const glm::dvec3 eye(view.eye), forward(view.forward);
+    const glm::dvec2 range(view.depthRange);
+    const std::vector<double> gauss = gaussOf(kernel);
+    Image g(points.width, points.height, 1);
+    for (int y = 0; y < points.height; ++y)
+        for (int x = 0; x < points.width; ++x) {
+            if (reached.at(x, y, 0) < 0.5f) continue;
+            const glm::dvec3 p(points.position.at(x, y, 0), points.position.at(x, y, 1),
+                               points.position.at(x, y, 2));
+            const glm::dvec4 clip = vp * glm::dvec4(p, 1.0);
+            const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+            if (clip.w <= 0.0 || std::abs(ndc.x) > 1.0 || std::abs(ndc.y) > 1.0) continue;
+            const double lightDepth = glm::dot(p - eye, forward);
+            const double zf = std::clamp((lightDepth - range.x) / (range.y - range.x), 0.0, 1.0) -
+                              double(scene.shadow.depthBias);
+            g.at(x, y, 0) = float(filtered(depth, glm::dvec2(ndc) * 0.5 + 0.5, zf, kernel, gauss));
+        }
+    return g;
+}
+
+}  // namespace sl
