@@ -28,7 +28,8 @@
 // reports as "not implemented yet" and previews in magenta. A correct solution never writes
 // a negative value. (This stub writes one texel per invocation: T = 1.)
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// 64 x 1: llvmpipe runs 8 consecutive x as one SIMD vector; rows, not 8x8 tiles (docs/performance.md)
+layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
