@@ -29,6 +29,7 @@ public:
     std::vector<int> takeKeyPresses();
     int width() const;   // framebuffer size in pixels
     int height() const;
+    GLFWwindow* handle() const { return window_; }  // for ImGui's GLFW backend (ImGuiLayer)
 
 private:
     GLFWwindow* window_ = nullptr;

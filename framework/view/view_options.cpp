@@ -1,0 +1,38 @@
+// ViewOptions: parsing of the view.* settings (see view_options.h).
+#include "view_options.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sl {
+
+const std::vector<std::string>& viewImageNames() {
+    static const std::vector<std::string> names = {"final", "shadow", "moments_raw",
+                                                   "moments_filtered", "sat"};
+    return names;
+}
+
+bool setViewOption(ViewOptions& options, const std::string& key, const std::string& value) {
+    auto bad = [&](const std::string& expected) {
+        return std::invalid_argument("--set " + key + "=" + value + ": expected " + expected +
+                                     ", found \"" + value + "\"");
+    };
+    if (key == "view.image") {
+        const auto& names = viewImageNames();
+        if (std::find(names.begin(), names.end(), value) == names.end())
+            throw bad("one of final, shadow, moments_raw, moments_filtered, sat");
+        options.image = value;
+    } else if (key == "view.channel") {
+        if (value == "all") options.channel = -1;
+        else if (value.size() == 1 && value[0] >= '0' && value[0] <= '3') options.channel = value[0] - '0';
+        else throw bad("all, 0, 1, 2 or 3");
+    } else if (key.rfind("view.", 0) == 0) {
+        throw std::invalid_argument("--set " + key + ": expected view.image or view.channel, "
+                                    "found \"" + key + "\"");
+    } else {
+        return false;
+    }
+    return true;
+}
+
+}  // namespace sl
