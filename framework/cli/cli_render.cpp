@@ -1,9 +1,8 @@
 // cli_render: the subcommands that render and measure.
 //   render  renders one scene through a solution and writes its images and sidecar
-//   bench   times the filter passes against a copy pass (docs/performance.md)
+//   bench   (cli_bench.cpp) times the filter passes against a copy pass
 //   info    prints the GL backend, renderer and Mesa version
 #include "cli_commands.h"
-#include "filter_benchmark.h"
 #include "gl_context.h"
 #include "image_io.h"
 #include "pass_plan.h"
@@ -17,6 +16,9 @@
 #include <iostream>
 
 namespace sl::cli {
+
+void addBenchCommand(CLI::App& app, Context& ctx);  // bench (cli_bench.cpp)
+
 namespace {
 
 int runRender(const std::string& scenePath, const std::string& solution,
@@ -33,19 +35,6 @@ int runRender(const std::string& scenePath, const std::string& solution,
     std::cout << "wrote " << outDir << "/{final,shadow,moments_raw,moments_filtered}.{exr,png} "
               << "and render.json (" << context->info().backend << ", "
               << context->info().renderer << ")\n";
-    return Ok;
-}
-
-int runBench(int size, int repeats, const std::string& solution, const std::string& backend,
-             const std::string& jsonPath) {
-    auto context = createContext(parseBackendKind(backend));
-    Renderer renderer(
-        ShaderLibrary::forSolution(resolveSolution(solution), repoRoot()));
-    BenchReport report = runFilterBenchmark(renderer, size, repeats);
-    std::cout << "filter benchmark: " << solution << " on " << context->info().renderer << ", "
-              << context->info().version << "\n"
-              << formatBenchReport(report);
-    if (!jsonPath.empty()) std::ofstream(jsonPath) << benchReportJson(report) << "\n";
     return Ok;
 }
 
@@ -67,19 +56,7 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
         ctx.exitCode = runRender(args->scene, args->solution, args->out, ctx.backend, args->explain);
     });
 
-    auto* bench = app.add_subcommand("bench", "time the filter passes against a copy pass");
-    struct BenchArgs {
-        int size = 1024, repeats = 21;
-        std::string json, solution = "reference";
-    };
-    auto b = std::make_shared<BenchArgs>();
-    bench->add_option("--size", b->size, "texture size (square, RGBA32F)")->check(CLI::Range(16, 4096));
-    bench->add_option("--repeats", b->repeats, "measured repeats per pass")->check(CLI::Range(3, 1000));
-    bench->add_option("--solution", b->solution, "whose filters to time");
-    bench->add_option("--json", b->json, "also write the figures as JSON");
-    bench->callback([b, &ctx] {
-        ctx.exitCode = runBench(b->size, b->repeats, b->solution, ctx.backend, b->json);
-    });
+    addBenchCommand(app, ctx);  // cli_bench.cpp
 
     auto* info = app.add_subcommand("info", "print the GL backend and renderer");
     info->callback([&ctx] {

@@ -1,5 +1,6 @@
 // filter_benchmark: times the filter passes against a plain copy pass over the same texture,
-// in the same run, and reports medians and ratios (machines are noisy; ratios travel).
+// in the same run, and reports medians, spreads and a verdict against the goals of
+// docs/performance.md (machines are noisy and differ; ratios measured in one run travel).
 #pragma once
 
 #include "renderer.h"
@@ -10,12 +11,19 @@
 namespace sl {
 
 struct BenchRow {
-    std::string name;    // "gaussian r=8, x"
+    std::string name;        // "gaussian r=8, y"
     double medianMs = 0;
-    double baselineMs = 0;  // median of the copy passes it is compared with
-    double ratio = 0;       // medianMs / baselineMs
-    double target = 0;      // the ratio it should stay under (0: none)
+    double baselineMs = 0;   // median of what it is compared with (copy passes, a lighting pass)
+    double ratio = 0;        // median over repeats of (pass / baseline of the same repeat)
+    double ratioMin = 0;     // spread of that ratio over the repeats
+    double ratioMax = 0;
+    double goal = 0;         // the ratio it should stay under (0: no goal)
+    bool implemented = true; // false: the stage wrote the stub value -1 (not timed meaningfully)
+    std::string baseline;    // "copy", "2 copies", "bilinear fetch"
 };
+
+// "✓ ≤ 1.3", "✗ > 1.3", "not implemented", or "" (no goal).
+std::string benchVerdict(const BenchRow& row);
 
 struct BenchReport {
     int size = 0;
@@ -24,9 +32,20 @@ struct BenchReport {
     std::vector<BenchRow> rows;
 };
 
+struct BenchOptions {
+    int size = 1024;
+    int repeats = 21;
+    // Also time the lighting pass of `lightingScene` with its SAT lookup against the same scene
+    // with a plain bilinear fetch of filtered moments (empty: skip).
+    std::string lightingScene;
+};
+
 // Runs every measured pass `repeats` times, interleaved so that drifts in machine load hit
 // them alike. The filters are the renderer's library's (normally reference/).
-BenchReport runFilterBenchmark(Renderer& renderer, int size, int repeats);
+BenchReport runFilterBenchmark(Renderer& renderer, const BenchOptions& options);
+inline BenchReport runFilterBenchmark(Renderer& renderer, int size, int repeats) {
+    return runFilterBenchmark(renderer, BenchOptions{size, repeats, ""});
+}
 
 std::string formatBenchReport(const BenchReport& report);  // a Markdown table
 std::string benchReportJson(const BenchReport& report);

@@ -1,0 +1,73 @@
+// test_bench_report: what `shadowlab bench` reports, checked on a tiny texture: a stubbed stage
+// says "not implemented" (no ✓), an implemented one gets a ratio with its spread and a
+// verdict against the goal, and --json carries the same rows. No speed is asserted here:
+// timings belong to the Bench* suites (CTest label `bench`, run by `./kit bench`).
+#include "filter_benchmark.h"
+#include "gl_test_support.h"
+
+#include <nlohmann/json.hpp>
+
+namespace sl {
+namespace {
+
+const BenchRow* findRow(const BenchReport& report, const std::string& name) {
+    for (const auto& row : report.rows)
+        if (row.name == name) return &row;
+    return nullptr;
+}
+
+TEST(FilterBenchmark, StubStagesAreNotImplementedAndGetNoVerdict) {
+    test::sharedContext();
+    Renderer renderer(test::library("student"));
+    const BenchReport report = runFilterBenchmark(renderer, 32, 3);
+    for (const char* name : {"gaussian r=8, x", "gaussian r=16, y", "sat, rows + columns"}) {
+        const BenchRow* row = findRow(report, name);
+        ASSERT_NE(row, nullptr) << name;
+        EXPECT_FALSE(row->implemented) << name;
+        EXPECT_EQ(benchVerdict(*row), "not implemented") << name;
+    }
+    const std::string table = formatBenchReport(report);
+    EXPECT_NE(table.find("| gaussian r=8, x |"), std::string::npos) << table;
+    EXPECT_EQ(table.find("✓"), std::string::npos) << table;  // nothing stubbed passes
+}
+
+TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
+    test::sharedContext();
+    Renderer renderer(test::library("reference"));
+    const BenchReport report = runFilterBenchmark(renderer, 32, 3);
+    ASSERT_EQ(report.rows.front().name, "copy");
+    for (const auto& row : report.rows) {
+        EXPECT_TRUE(row.implemented) << row.name;
+        EXPECT_LE(row.ratioMin, row.ratio) << row.name;
+        EXPECT_LE(row.ratio, row.ratioMax) << row.name;
+        EXPECT_GT(row.medianMs, 0.0) << row.name;
+    }
+    // The goals of docs/performance.md; the verdict follows the ratio either way.
+    EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=8, y")->goal, 1.3);
+    EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=16, x")->goal, 2.0);
+    EXPECT_DOUBLE_EQ(findRow(report, "sat, rows + columns")->goal, 1.5);
+    BenchRow row = *findRow(report, "gaussian r=8, x");
+    row.ratio = 1.29;
+    EXPECT_EQ(benchVerdict(row), "✓ ≤ 1.3");
+    row.ratio = 1.31;
+    EXPECT_EQ(benchVerdict(row), "✗ > 1.3");
+
+    const auto json = nlohmann::json::parse(benchReportJson(report));
+    ASSERT_EQ(json["rows"].size(), report.rows.size());
+    const auto& first = json["rows"][1];
+    EXPECT_EQ(first["pass"], report.rows[1].name);
+    for (const char* key : {"ratio", "ratioMin", "ratioMax", "goal", "implemented", "verdict"})
+        EXPECT_TRUE(first.contains(key)) << key;
+}
+
+TEST(FilterBenchmark, CommandPrintsJsonWhenAskedWithoutAFile) {
+    auto r = test::runCommand(test::shadowlabBinary() +
+                              " bench --size 32 --repeats 3 --lighting-scene none --json");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto json = nlohmann::json::parse(r.output.substr(r.output.find('{')));
+    EXPECT_EQ(json["size"], 32);
+    EXPECT_EQ(json["rows"][0]["pass"], "copy");
+}
+
+}  // namespace
+}  // namespace sl
