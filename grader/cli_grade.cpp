@@ -30,7 +30,9 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
     auto* bat = grade->add_option("--batch", g->batch, "folder of submission folders (TA)");
     sub->excludes(bat);
     grade->add_option("--out", g->out, "output folder (results.json, report/)")->required();
-    grade->add_option("--scenes", g->o.scenes, "comma-separated scene names (default: all public)")
+    grade->add_option("--scenes", g->o.scenes,
+                      "comma-separated scene names, paths to hidden scene files, and the keyword "
+                      "\"public\" for every public scene (default: public)")
         ->delimiter(',');
     grade->add_option("--reference", g->o.reference, "live, golden or auto (live if reference/ exists)")
         ->check(CLI::IsMember({"live", "golden", "auto"}));
@@ -64,7 +66,7 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
         std::cout << "results: " << (o.out / "results.json").string();
         if (o.report && !s.failed) std::cout << ", report: " << (o.out / "report" / "index.html").string();
         std::cout << "\n";
-        for (const auto& w : s.warnings) std::cerr << "warning: " << w << "\n";
+        for (const auto& w : visibleSummary(s).warnings) std::cerr << "warning: " << w << "\n";
         ctx.exitCode = s.failed ? Failed : Ok;
     });
 
@@ -72,21 +74,23 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
     auto go = std::make_shared<GoldenOptions>();
     go->out = repoRoot() / "scenes" / "goldens";
     golden->add_option("--solution", go->solution, "solution to render (default reference)");
-    golden->add_option("--out", go->out, "golden folder (default scenes/goldens)");
-    golden->add_option("--scenes", go->scenes, "comma-separated scene names")->delimiter(',');
-    golden->add_flag("--check", go->check, "compare a fresh render's encoding with the manifest");
+    golden->add_option("--out", go->out, "public golden folder (default scenes/goldens); a hidden "
+                                         "scene's goldens go to goldens/ next to its scene file");
+    golden->add_option("--scenes", go->scenes,
+                       "comma-separated scene names, paths to hidden scene files, and the keyword "
+                       "\"public\" for every public scene (default: public)")->delimiter(',');
+    golden->add_flag("--check", go->check, "compare a fresh render's encoding with the manifests");
     golden->callback([go, &ctx] {
         GoldenOptions o = *go;
         o.backend = ctx.backend;
-        auto stale = makeGoldens(o);
+        const GoldenRun run = runGoldens(o);
+        for (const auto& m : run.messages) std::cout << m << "\n";
         if (o.check) {
-            for (const auto& s : stale) std::cout << "stale: " << s << "\n";
-            std::cout << (stale.empty() ? "goldens are up to date\n"
-                                        : "goldens are stale: run shadowlab golden --solution "
-                                          "reference --out " + o.out.string() + "\n");
-            ctx.exitCode = stale.empty() ? Ok : Failed;
+            for (const auto& s : run.stale) std::cout << "stale: " << s << "\n";
+            std::cout << (run.stale.empty() ? "goldens are up to date\n"
+                                            : "goldens are stale: run " + run.advice + "\n");
+            ctx.exitCode = run.stale.empty() ? Ok : Failed;
         } else {
-            std::cout << "wrote " << (o.out / "manifest.json").string() << "\n";
             ctx.exitCode = Ok;
         }
     });

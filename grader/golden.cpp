@@ -4,6 +4,7 @@
 // relative error of 2^-16 (100× inside the tolerance) that lets ZIP compress the low bits
 // away; shadow and colour images are half floats (error ≤ 5e-4, 20× inside their tolerance).
 // Both encodings are deterministic, so `golden --check` can compare hashes with the manifest.
+// Hidden scenes' goldens go into goldens/ next to their scene file, never the public folder.
 #include "golden.h"
 #include "raw_image.h"
 #include "worker.h"
@@ -16,13 +17,18 @@
 #include "renderer.h"
 #include "scene.h"
 #include "scene_list.h"
+#include "probe_check.h"
 
 #include <OpenImageIO/imageio.h>
+
+#include <unistd.h>
 
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <set>
 
 namespace sl::grader {
 namespace {
@@ -67,80 +73,218 @@ std::string envOr(const char* name, const char* fallback) {
     return v ? v : fallback;
 }
 
+std::string joined(const std::vector<std::string>& items, const char* sep) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : sep) + i;
+    return s;
+}
+
+// Renders one scene, checks its probes, and encodes its goldens into `dir` (an empty folder).
+// Returns the scene's manifest entry.
+nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, const fs::path& dir,
+                           const ContextInfo& info, std::vector<std::string>& probeErrors) {
+    Scene scene = loadScene(gs.path.string());
+    Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
+    RenderResult result = renderer.render(scene, planPasses(scene));
+    const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
+        auto it = result.images.find(name);
+        return it == result.images.end() ? nullptr : &it->second;
+    });
+    probeErrors.insert(probeErrors.end(), failures.begin(), failures.end());
+    if (!failures.empty()) return nullptr;
+    fs::create_directories(dir);
+    const std::string& name = gs.name;
+    nlohmann::json images = nlohmann::json::object();
+    for (const auto& [image, pixels] : result.images) {
+        if (image.rfind("sat", 0) == 0) continue;  // graded through moments_filtered
+        const fs::path file = dir / (image + ".exr");
+        writeEncoded(pixels, file, image.rfind("moments", 0) == 0);
+        images[image] = nlohmann::json{{"file", name + "/" + image + ".exr"},
+                                       {"sha256", sha256File(file)}};
+    }
+    // The msm stage's reference: lit from the golden filtered moments as stored (rounded),
+    // exactly what a student's msm.glsl gets as input.
+    if (result.images.count("moments_filtered")) {
+        const Image stored = readAnyImage(dir / "moments_filtered.exr");
+        RenderResult isolated = renderFromMoments(renderer, scene, stored);
+        for (const auto& [image, pixels] : isolated.images) {
+            if (image.rfind("shadow", 0) != 0) continue;
+            const fs::path file = dir / ("msm_" + image + ".exr");
+            writeEncoded(pixels, file, false);
+            images["msm_" + image] = nlohmann::json{{"file", name + "/msm_" + image + ".exr"},
+                                                    {"sha256", sha256File(file)}};
+        }
+    }
+    nlohmann::json entry = {{"scene_sha256", sha256File(gs.path)},
+                            {"images", images},
+                            {"mesa_version", info.mesaVersion},
+                            {"renderer", info.renderer}};
+    if (gs.hidden) entry["scene_file"] = fs::absolute(gs.path).lexically_normal().string();
+    std::cerr << "golden: " << name << " (" << images.size() << " images)\n";
+    return entry;
+}
+
+// What a fresh render differs in from a folder's manifest (check).
+void compareEntry(const std::string& scene, const nlohmann::json& fresh,
+                  const nlohmann::json& committed, std::vector<std::string>& stale) {
+    const auto& scenes = committed.is_object() && committed.contains("scenes")
+                             ? committed["scenes"] : nlohmann::json::object();
+    if (!scenes.contains(scene)) {
+        stale.push_back(scene + ": no goldens in the manifest");
+        return;
+    }
+    const auto& old = scenes[scene];
+    if (old.value("scene_sha256", "") != fresh["scene_sha256"])
+        stale.push_back(scene + ": the scene file changed since its goldens were made");
+    for (const auto& [image, e] : fresh["images"].items())
+        if (!old["images"].contains(image) || old["images"][image]["sha256"] != e["sha256"])
+            stale.push_back(scene + "/" + image);
+    for (const auto& [image, e] : old["images"].items())
+        if (!fresh["images"].contains(image))
+            stale.push_back(scene + "/" + image + ": in the manifest, no longer rendered");
+}
+
 }  // namespace
 
-std::vector<std::string> makeGoldens(const GoldenOptions& o) {
+fs::path goldenFolder(const GradedScene& scene, const fs::path& publicGoldens) {
+    return scene.hidden ? fs::absolute(scene.path).parent_path() / "goldens" : publicGoldens;
+}
+
+GoldenRun runGoldens(const GoldenOptions& o) {
     const fs::path solution = resolveSolution(o.solution);
     auto context = createContext(parseBackendKind(o.backend));
     const ContextInfo& info = context->info();
-    const fs::path dir = o.check ? fs::temp_directory_path() / ("shadowlab-golden-check-" +
-                                                                std::to_string(::getpid()))
-                                 : o.out;
-    fs::create_directories(dir);
-    nlohmann::json manifest = {
-        {"mesa_version", info.mesaVersion},
-        {"renderer", info.renderer},
-        {"gl_version", info.version},
-        {"backend", info.backend},
-        {"settings",
-         {{"LP_NUM_THREADS", envOr("LP_NUM_THREADS", "")},
-          {"GALLIUM_DRIVER", envOr("GALLIUM_DRIVER", "llvmpipe")},
-          {"moment_encoding", "float32, mantissa rounded to " +
-                                  std::to_string(kMomentMantissaBits) + " bits, ZIP"},
-          {"image_encoding", "half, ZIP"}}},
-        {"solution", o.solution},
-        {"made_by", "shadowlab golden --solution " + o.solution + " --out " + o.out.string()},
-        {"scenes", nlohmann::json::object()}};
     const auto scenes = gradedScenes(o.scenes);
+    const fs::path staging = fs::temp_directory_path() /
+                             ("shadowlab-golden-" + std::to_string(::getpid()));
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+
+    // Render everything into a staging folder first: a wrong probe leaves every golden as it was.
+    std::map<fs::path, std::vector<std::pair<GradedScene, nlohmann::json>>> byFolder;
+    std::vector<std::string> probeErrors;
     for (const GradedScene& gs : scenes) {
-        const std::string& name = gs.name;
-        const fs::path& path = gs.path;
-        Scene scene = loadScene(path.string());
-        Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
-        RenderResult result = renderer.render(scene, planPasses(scene));
-        fs::create_directories(dir / name);
-        nlohmann::json images = nlohmann::json::object();
-        for (const auto& [image, pixels] : result.images) {
-            if (image.rfind("sat", 0) == 0) continue;  // graded through moments_filtered
-            const fs::path file = dir / name / (image + ".exr");
-            writeEncoded(pixels, file, image.rfind("moments", 0) == 0);
-            images[image] = nlohmann::json{{"file", name + "/" + image + ".exr"},
-                                           {"sha256", sha256File(file)}};
-        }
-        // The msm stage's reference: lit from the golden filtered moments as stored (rounded),
-        // exactly what a student's msm.glsl gets as input.
-        if (result.images.count("moments_filtered")) {
-            const Image stored = readAnyImage(dir / name / "moments_filtered.exr");
-            RenderResult isolated = renderFromMoments(renderer, scene, stored);
-            for (const auto& [image, pixels] : isolated.images) {
-                if (image.rfind("shadow", 0) != 0) continue;
-                const fs::path file = dir / name / ("msm_" + image + ".exr");
-                writeEncoded(pixels, file, false);
-                images["msm_" + image] = nlohmann::json{{"file", name + "/msm_" + image + ".exr"},
-                                                        {"sha256", sha256File(file)}};
-            }
-        }
-        manifest["scenes"][name] = nlohmann::json{{"scene_sha256", sha256File(path)}, {"images", images}};
-        std::cerr << "golden: " << name << " (" << images.size() << " images)\n";
+        const fs::path folder = goldenFolder(gs, o.out);
+        nlohmann::json entry = renderScene(gs, solution, staging / gs.name, info, probeErrors);
+        if (!entry.is_null()) byFolder[folder].push_back({gs, entry});
     }
-    std::vector<std::string> stale;
-    if (o.check) {
-        nlohmann::json committed = readManifest(o.out);
-        for (const auto& [scene, entry] : manifest["scenes"].items())
-            for (const auto& [image, e] : entry["images"].items()) {
-                const auto* old = committed.is_null() ? nullptr
-                                  : committed["scenes"].contains(scene) &&
-                                          committed["scenes"][scene]["images"].contains(image)
-                                      ? &committed["scenes"][scene]["images"][image]
-                                      : nullptr;
-                if (!old || (*old)["sha256"] != e["sha256"]) stale.push_back(scene + "/" + image);
-            }
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    } else {
-        std::ofstream(dir / "manifest.json") << manifest.dump(2) << "\n";
+    if (!probeErrors.empty()) {
+        fs::remove_all(staging, ec);
+        throw SceneError("the " + o.solution + " render does not match " +
+                         std::to_string(probeErrors.size()) + " probe(s) (nothing was written):\n" +
+                         joined(probeErrors, "\n"));
     }
-    return stale;
+
+    GoldenRun run;
+    std::vector<std::string> staleScenes;  // as --scenes would name them
+    for (const auto& [folder, entries] : byFolder) {
+        nlohmann::json manifest = readManifest(folder);
+        if (!manifest.is_object()) manifest = nlohmann::json::object();
+        if (!manifest.contains("scenes") || !manifest["scenes"].is_object())
+            manifest["scenes"] = nlohmann::json::object();
+        std::set<std::string> rendered;
+        for (const auto& [gs, entry] : entries) rendered.insert(gs.name);
+        const bool publicFolder = fs::weakly_canonical(folder) == fs::weakly_canonical(o.out);
+        // Entries this run does not render: kept, and said so; dropped only when their
+        // images are gone; a public folder's entry for a scene students lack is a leak.
+        std::vector<std::string> kept, dropped;
+        for (auto it = manifest["scenes"].begin(); it != manifest["scenes"].end();) {
+            const std::string name = it.key();
+            if (rendered.count(name)) { ++it; continue; }
+            if (!fs::exists(folder / name)) {
+                dropped.push_back(name);
+                it = manifest["scenes"].erase(it);
+                continue;
+            }
+            kept.push_back(name);
+            if (publicFolder && !fs::exists(repoRoot() / "scenes" / (name + ".json"))) {
+                run.messages.push_back(
+                    "warning: " + (folder / name).string() + " holds goldens of \"" + name +
+                    "\", which is not a public scene: they ship in the student kit. If it is a "
+                    "hidden scene, delete that folder (its goldens belong in goldens/ next to its "
+                    "scene file: golden --scenes <path>); the manifest entry goes with it");
+                if (o.check) run.stale.push_back(name + ": not a public scene, in the public goldens");
+            }
+            ++it;
+        }
+        if (o.check) {
+            for (const auto& [gs, entry] : entries) {
+                const size_t before = run.stale.size();
+                compareEntry(gs.name, entry, manifest, run.stale);
+                if (run.stale.size() > before)
+                    staleScenes.push_back(gs.hidden ? gs.path.string() : gs.name);
+            }
+            continue;
+        }
+        for (const auto& [gs, entry] : entries) {
+            fs::remove_all(folder / gs.name, ec);
+            fs::create_directories(folder / gs.name);
+            fs::copy(staging / gs.name, folder / gs.name, fs::copy_options::recursive);
+            manifest["scenes"][gs.name] = entry;
+        }
+        std::string madeBy = "shadowlab golden --solution " + o.solution + " --out " + o.out.string();
+        if (!o.scenes.empty()) madeBy += " --scenes " + joined(o.scenes, ",");
+        manifest["mesa_version"] = info.mesaVersion;
+        manifest["renderer"] = info.renderer;
+        manifest["gl_version"] = info.version;
+        manifest["backend"] = info.backend;
+        manifest["settings"] = {
+            {"LP_NUM_THREADS", envOr("LP_NUM_THREADS", "")},
+            {"GALLIUM_DRIVER", envOr("GALLIUM_DRIVER", "llvmpipe")},
+            {"moment_encoding",
+             "float32, mantissa rounded to " + std::to_string(kMomentMantissaBits) + " bits, ZIP"},
+            {"image_encoding", "half, ZIP"}};
+        manifest["solution"] = o.solution;
+        manifest["made_by"] = madeBy;
+        fs::create_directories(folder);
+        std::ofstream(folder / "manifest.json") << manifest.dump(2) << "\n";
+        std::string line = "wrote " + (folder / "manifest.json").string() + " (" +
+                            std::to_string(entries.size()) + " scenes rendered";
+        if (!kept.empty()) line += "; kept from before: " + joined(kept, ", ");
+        if (!dropped.empty()) line += "; dropped, their images are gone: " + joined(dropped, ", ");
+        run.messages.push_back(line + ")");
+    }
+    fs::remove_all(staging, ec);
+    if (!run.stale.empty()) {
+        run.advice = "shadowlab golden --solution " + o.solution + " --out " + o.out.string();
+        if (!staleScenes.empty()) run.advice += " --scenes " + joined(staleScenes, ",");
+    }
+    return run;
+}
+
+std::vector<std::string> makeGoldens(const GoldenOptions& options) {
+    return runGoldens(options).stale;
+}
+
+void checkReferenceProbes(const std::vector<GradedScene>& scenes,
+                          const std::function<fs::path(size_t, const std::string&)>& file) {
+    std::vector<std::string> errors;
+    int hidden = 0;
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const Scene scene = loadScene(scenes[i].path.string());
+        std::map<std::string, Image> images;
+        bool missing = false;
+        for (const ShadowProbe& p : scene.probes) {
+            const std::string name = probeImageName(scene, p);
+            if (images.count(name)) continue;
+            const fs::path f = file(i, name);
+            if (!fs::exists(f)) { missing = true; break; }
+            images[name] = readAnyImage(f);
+        }
+        if (missing) continue;
+        const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
+            auto it = images.find(name);
+            return it == images.end() ? nullptr : &it->second;
+        });
+        if (scenes[i].hidden) hidden += int(failures.size());
+        else errors.insert(errors.end(), failures.begin(), failures.end());
+    }
+    if (hidden)
+        errors.push_back(std::to_string(hidden) + " probe(s) of hidden scenes (see them with: "
+                         "shadowlab golden --check --scenes <the hidden scene files>)");
+    if (!errors.empty())
+        throw std::runtime_error("the reference does not match the scenes' probes, so the scenes "
+                                 "(or their probes) are wrong:\n" + joined(errors, "\n"));
 }
 
 Image readGolden(const fs::path& goldens, const std::string& scene, const std::string& image) {

@@ -109,11 +109,15 @@ public:
             throw std::runtime_error("--reference live needs reference/; use --reference golden");
         goldens_ = o_.goldens.empty() ? repoRoot() / "scenes" / "goldens" : o_.goldens;
         if (mode_ == "golden") {
-            const nlohmann::json manifest = readManifest(goldens_);
-            if (manifest.is_null())
-                throw std::runtime_error("no golden images in " + goldens_.string() +
-                                         " (make them with: shadowlab golden --solution reference)");
             for (const auto& scene : scenes_) {
+                // A hidden scene's goldens are in goldens/ next to its file (golden.h).
+                const nlohmann::json manifest = readManifest(goldenFolder(scene, goldens_));
+                if (manifest.is_null())
+                    throw std::runtime_error(
+                        scene.hidden ? "no golden images for a hidden scene (make them with: "
+                                       "shadowlab golden --scenes <its file>)"
+                                     : "no golden images in " + goldens_.string() +
+                                           " (make them with: shadowlab golden --solution reference)");
                 const auto& entry = manifest["scenes"].contains(scene.name)
                                         ? manifest["scenes"][scene.name] : nlohmann::json();
                 if (entry.is_null())
@@ -152,6 +156,10 @@ public:
         Stopwatch clock;
         runPhase(phaseA);
         clock.lap("renders without reference input");
+        // The scenes' probes hold on the reference they are graded against, or grading stops.
+        checkReferenceProbes(scenes_, [this](size_t i, const std::string& image) {
+            return referenceFile(i, image);
+        });
         runPhase(phaseB);
         clock.lap("filter renders");
         if (mode_ == "golden") {
@@ -207,7 +215,7 @@ private:
     fs::path referenceFile(size_t scene, const std::string& image) const {
         const fs::path refs = o_.referenceImages.empty() ? workDir(o_) / "ref" : o_.referenceImages;
         return mode_ == "live" ? refs / scenes_[scene].name / (image + ".raw")
-                               : goldens_ / scenes_[scene].name / (image + ".exr");
+                               : goldenFolder(scenes_[scene], goldens_) / scenes_[scene].name / (image + ".exr");
     }
 
     void runPhase(std::vector<Job>& jobs) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace sl::grader {
 
@@ -19,10 +20,22 @@ void writeResults(const std::filesystem::path& path, const nlohmann::json& resul
 void writeFailureResults(const std::filesystem::path& path, const std::string& reason,
                          double seconds);
 
-// One row per stage: points, maximum, and the scenes that lost points.
+// One row per stage: points, maximum, and the scenes that lost points. Visible tests only
+// (stdout is shown to students): hidden scenes are counted, never named.
 void printScoreTable(std::ostream& out, const GradeSummary& summary);
 
-// Points per stage, summed over scenes (scores.csv, the table).
-std::map<std::string, std::pair<double, double>> stageTotals(const GradeSummary& summary);
+// Points per stage, summed over scenes (scores.csv: all; the table: visibleOnly).
+std::map<std::string, std::pair<double, double>> stageTotals(const GradeSummary& summary,
+                                                               bool visibleOnly = false);
+
+// What students may see before the due date: the visible tests' points, how many hidden
+// tests there are, and the warnings split into those that name no hidden scene and those
+// that do (staff-only: they go into the hidden tests' own output).
+struct VisibleSummary {
+    double score = 0.0, maxScore = 0.0;
+    int hiddenTests = 0;
+    std::vector<std::string> warnings, hiddenWarnings;
+};
+VisibleSummary visibleSummary(const GradeSummary& summary);
 
 }  // namespace sl::grader

@@ -12,17 +12,28 @@
 namespace sl::grader {
 namespace {
 
-bool loadGraded(const std::filesystem::path& path, GradedScene& out) {
+namespace fs = std::filesystem;
+
+bool loadGraded(const fs::path& path, GradedScene& out) {
     Scene scene = loadScene(path.string());
     if (planPasses(scene).shadowLights.empty()) return false;
     out = {scene.name, path, toString(scene.shadow.filter)};
     return true;
 }
 
+bool inside(const fs::path& file, const fs::path& dir) {
+    const fs::path rel = fs::weakly_canonical(file).lexically_relative(fs::weakly_canonical(dir));
+    return !rel.empty() && *rel.begin() != "..";
+}
+
 }  // namespace
 
+bool isHiddenScenePath(const fs::path& scene) {
+    const fs::path scenes = repoRoot() / "scenes";
+    return !inside(scene, scenes) || inside(scene, scenes / "hidden");
+}
+
 std::vector<GradedScene> gradedScenes(const std::vector<std::string>& only) {
-    namespace fs = std::filesystem;
     std::vector<GradedScene> out;
     const fs::path dir = repoRoot() / "scenes";
     if (only.empty()) {
@@ -36,10 +47,19 @@ std::vector<GradedScene> gradedScenes(const std::vector<std::string>& only) {
         }
         return out;
     }
+    auto add = [&out](const GradedScene& g) {
+        for (const auto& o : out) {
+            if (o.name != g.name) continue;
+            if (fs::weakly_canonical(o.path) == fs::weakly_canonical(g.path)) return;  // twice
+            throw std::runtime_error("two scenes are named \"" + g.name + "\": " + o.path.string() +
+                                     " and " + g.path.string() + " (rename one: a scene's name "
+                                     "is its file name, and names its tests and goldens)");
+        }
+        out.push_back(g);
+    };
     for (const std::string& name : only) {
         if (name == "public") {  // every public scene, next to hidden ones given by path
-            auto all = gradedScenes();
-            out.insert(out.end(), all.begin(), all.end());
+            for (const auto& g : gradedScenes()) add(g);
             continue;
         }
         fs::path p = name.find('/') != std::string::npos || name.ends_with(".json")
@@ -49,8 +69,8 @@ std::vector<GradedScene> gradedScenes(const std::vector<std::string>& only) {
         GradedScene g;
         if (!loadGraded(p, g))
             throw std::runtime_error("scene \"" + name + "\" has no shadowing light to grade");
-        g.hidden = fs::weakly_canonical(p).parent_path() != fs::weakly_canonical(dir);
-        out.push_back(g);
+        g.hidden = isHiddenScenePath(p);
+        add(g);
     }
     return out;
 }

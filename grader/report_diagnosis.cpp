@@ -1,0 +1,163 @@
+// report_diagnosis: each pattern is a plain rule over the scored tests:
+//   border     most of an image's failing texels lie in a band along its edge (a red frame
+//              in the heat-map): the filter's or the lookup's border rule;
+//   SAT only   points lost on SAT scenes only, while Gaussian scenes pass the same stages;
+//   NaN        non-finite values in an image, or NaN/Inf among the failing hard cases;
+//   bias       failing hard cases in the sets whose Hankel matrix is singular without the
+//              moment bias (constant depth, two/three points, c3 = 0, 16-bit moments);
+//   guards     hard cases outside [0, 1] or non-monotone: the clamps and pivot floors;
+//   interface  `final` loses points while every isolated stage of that scene passes.
+#include "report_diagnosis.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <set>
+
+namespace sl::grader {
+namespace {
+
+bool lost(const TestResult& t) { return t.score < t.maxScore - 1e-9; }
+
+std::string list(const std::set<std::string>& items) {
+    std::string s;
+    for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+    return s;
+}
+
+std::string percent(double v) {
+    char b[16];
+    std::snprintf(b, sizeof b, "%.0f%%", 100.0 * v);
+    return b;
+}
+
+}  // namespace
+
+ImageFindings findImageProblems(const Image& e, long nonFinite) {
+    ImageFindings f;
+    f.nonFinite = nonFinite;
+    if (e.empty()) return f;
+    // A border rule reaches as far as the filter does: up to the kernel's radius (<= 32 in
+    // the public scenes' maps of 512-2048 texels), so the band grows with the map.
+    f.band = std::max(4, std::max(e.width, e.height) / 32);
+    for (int y = 0; y < e.height; ++y)
+        for (int x = 0; x < e.width; ++x) {
+            if (!(e.at(x, y, 0) <= 1.0f)) {  // NaN counts as failing
+                ++f.failing;
+                const int edge = std::min(std::min(x, e.width - 1 - x), std::min(y, e.height - 1 - y));
+                if (edge < f.band) ++f.failingNearBorder;
+            }
+        }
+    return f;
+}
+
+std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<ImageFindings>& images,
+                                  bool includeHidden) {
+    std::vector<std::string> out;
+    auto shown = [&](bool hidden) { return includeHidden || !hidden; };
+
+    // Border: a red frame.
+    for (const auto& f : images) {
+        if (!shown(f.hidden) || f.failing < 4 || f.failingNearBorder < 0.9 * f.failing) continue;
+        const bool sat = f.stage == "sat";
+        out.push_back(f.scene + " (" + f.stage + ", " + f.image + "): " +
+                      percent(double(f.failingNearBorder) / f.failing) + " of the " +
+                      std::to_string(f.failing) + " texels outside tolerance lie within " +
+                      std::to_string(f.band) + " texels of the border (a red frame in the "
+                      "heat-map): check the border rule" +
+                      (sat ? " (the table's index -1 is the zero border; a box is clipped to "
+                             "the map, docs/stage_contract.md)"
+                           : f.stage == "gaussian" ? " (taps outside the map clamp to the edge "
+                                                     "texel, docs/stage_contract.md)"
+                                                   : "") + ".");
+    }
+
+    // SAT only / Gaussian only: the scenes' filters, from the filter tests that exist.
+    std::set<std::string> satScenes, gaussScenes, lostScenes, lostSat, lostGauss;
+    for (const auto& t : s.tests) {
+        if (!shown(t.hidden)) continue;
+        if (t.stage == "sat") satScenes.insert(t.scene);
+        if (t.stage == "gaussian") gaussScenes.insert(t.scene);
+    }
+    for (const auto& t : s.tests) {
+        if (!shown(t.hidden) || !lost(t) || t.stage == "robustness") continue;
+        lostScenes.insert(t.scene);
+        if (satScenes.count(t.scene)) lostSat.insert(t.scene);
+        if (gaussScenes.count(t.scene)) lostGauss.insert(t.scene);
+    }
+    if (!lostScenes.empty() && lostSat == lostScenes && !gaussScenes.empty())
+        out.push_back("Points are lost only on the SAT scenes (" + list(lostSat) +
+                      "); every Gaussian scene passes: look at sat.comp and sat_lookup.glsl "
+                      "(the table's precision, docs/numerics.md, or the box's corners).");
+    if (!lostScenes.empty() && lostGauss == lostScenes && !satScenes.empty())
+        out.push_back("Points are lost only on the Gaussian scenes (" + list(lostGauss) +
+                      "); every SAT scene passes: look at gaussian_blur.comp (weights, radius, "
+                      "direction, the border).");
+
+    // NaN / Inf in images.
+    std::map<std::string, std::set<std::string>> nanStages;
+    for (const auto& f : images)
+        if (shown(f.hidden) && f.nonFinite > 0) nanStages[f.stage].insert(f.scene);
+    for (const auto& [stage, scenes] : nanStages)
+        out.push_back("NaN or Inf values in the " + stage + " stage's output (" + list(scenes) +
+                      "): a division by zero, or a sqrt or log of a negative number, without a "
+                      "guard.");
+
+    // The hard cases, by case set (names are "<set>/<label>/zf...").
+    static const std::set<std::string> biasSets = {"constant-depth", "two-point", "three-point",
+                                                   "c3-zero", "quantized-16bit"};
+    for (const auto& t : s.tests) {
+        if (t.stage != "robustness" || !lost(t) || !t.metrics.contains("robustness")) continue;
+        const auto& failing = t.metrics["robustness"].value("failing", nlohmann::json::array());
+        std::map<std::string, int> bySet;
+        int nan = 0, range = 0, monotone = 0;
+        for (const auto& c : failing) {
+            const std::string name = c.value("case", "");
+            ++bySet[name.substr(0, name.find('/'))];
+            const std::string p = c.value("problems", "");
+            nan += p.find("NaN") != std::string::npos || p.find("Inf") != std::string::npos;
+            range += p.find("outside [0, 1]") != std::string::npos;
+            monotone += p.find("non-monotone") != std::string::npos;
+        }
+        std::set<std::string> biased;
+        int inBias = 0;
+        for (const auto& [set, n] : bySet)
+            if (biasSets.count(set)) biased.insert(set), inBias += n;
+        if (bySet.count("constant-depth") && bySet["constant-depth"] >= 3)
+            out.push_back("The constant-depth hard cases fail together (" +
+                          std::to_string(bySet["constant-depth"]) + "): the moment bias looks "
+                          "missing (b' = (1 - a) b + a (0.5, 0.5, 0.5, 0.5) keeps the Hankel "
+                          "matrix invertible when every depth is the same; docs/numerics.md).");
+        else if (biased.size() >= 2 && 2 * inBias >= int(failing.size()))
+            out.push_back("Most failing hard cases (" + std::to_string(inBias) + ") are in the "
+                          "sets whose Hankel matrix is singular without the bias (" + list(biased) +
+                          "): the moment bias looks missing or mixed the wrong way.");
+        if (nan)
+            out.push_back(std::to_string(nan) + " hard cases give NaN or Inf: a sqrt or a "
+                          "division in msm.glsl lacks its guard (docs/numerics.md, the pivot "
+                          "floors and the discriminant clamp).");
+        if (range)
+            out.push_back(std::to_string(range) + " hard cases give G outside [0, 1]: the final "
+                          "clamp (or a pivot floor) looks missing.");
+        if (monotone)
+            out.push_back(std::to_string(monotone) + " hard cases are non-monotone in zf: look at "
+                          "the root ordering and the case selection in msm.glsl.");
+    }
+
+    // final fails where the isolated stages pass: the stages' interface.
+    std::set<std::string> interfaceScenes;
+    for (const auto& t : s.tests) {
+        if (t.stage != "final" || !shown(t.hidden) || !lost(t)) continue;
+        bool othersPass = true, any = false;
+        for (const auto& u : s.tests)
+            if (u.scene == t.scene && u.stage != "final") any = true, othersPass = othersPass && !lost(u);
+        if (any && othersPass) interfaceScenes.insert(t.scene);
+    }
+    if (!interfaceScenes.empty())
+        out.push_back("final loses points on " + list(interfaceScenes) + " while every isolated "
+                      "stage of that scene passes: look at what the stages share (relativeDepth, "
+                      "used by the lighting pass on depths outside the shadow pass's range).");
+    return out;
+}
+
+}  // namespace sl::grader

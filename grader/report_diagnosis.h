@@ -1,0 +1,31 @@
+// report_diagnosis: known failure patterns, said in words for the report (a regrade request
+// is answered faster when the report says "the moment bias looks missing" than when it shows
+// 16 failing hard cases). Each finding names the evidence it is drawn from.
+#pragma once
+
+#include "grader.h"
+
+#include <string>
+#include <vector>
+
+namespace sl::grader {
+
+// Where one compared image's out-of-tolerance texels are (from its error map).
+struct ImageFindings {
+    std::string scene, stage, image;
+    bool hidden = false;
+    long failing = 0;          // texels/pixels outside tolerance
+    long failingNearBorder = 0;  // of those, within `band` texels of the image's edge
+    int band = 0;
+    long nonFinite = 0;
+};
+
+// Counts an error map's failing texels (> 1) and those near the border.
+ImageFindings findImageProblems(const Image& errorMap, long nonFinite);
+
+// The patterns the summary's tests (and the images' findings) match, one sentence each.
+// Hidden-scene tests count only with `includeHidden` (a student-visible report leaves them out).
+std::vector<std::string> diagnose(const GradeSummary& summary,
+                                  const std::vector<ImageFindings>& images, bool includeHidden);
+
+}  // namespace sl::grader

@@ -1,0 +1,88 @@
+// Hidden goldens (issue 7, §6): `golden --scenes <hidden scene>` writes into goldens/ next to
+// the hidden scene's file, never into the public folder (which ships to students); a
+// manifest is merged, never silently cut down to the scenes of one run; grade finds a hidden
+// scene's goldens; `golden --check` checks the scenes it is given and its advice names them.
+#include "test_grader_support.h"
+
+#include <set>
+
+namespace sl {
+namespace {
+
+// A public golden folder like the committed one: its manifest and its images.
+fs::path copyOfPublicGoldens(const fs::path& dir) {
+    fs::copy(test::root() / "scenes" / "goldens", dir, fs::copy_options::recursive);
+    return dir;
+}
+
+std::set<std::string> manifestScenes(const fs::path& folder) {
+    std::set<std::string> names;
+    auto j = nlohmann::json::parse(std::ifstream(folder / "manifest.json"));
+    for (const auto& [name, entry] : j["scenes"].items()) names.insert(name);
+    return names;
+}
+
+}  // namespace
+
+TEST(InstructorGoldens, HiddenGoldensGoNextToTheirSceneAndThePublicManifestKeepsItsEntries) {
+    const fs::path dir = test::tempDir("instructor_goldens");
+    const fs::path pub = copyOfPublicGoldens(dir / "public");
+    const auto before = manifestScenes(pub);
+    ASSERT_GE(before.size(), 6u);
+    fs::create_directories(dir / "private");
+    const fs::path hidden = dir / "private" / "secret_shelf.json";
+    fs::copy_file(test::scenePath("contact"), hidden);
+
+    auto r = test::runCommand(test::shadowlabBinary() + " golden --scenes classic," + hidden.string() +
+                              " --out " + pub.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // The public folder: the same scenes as before (classic remade, the rest kept, and said
+    // so), and nothing of the hidden scene.
+    EXPECT_EQ(manifestScenes(pub), before);
+    EXPECT_FALSE(fs::exists(pub / "secret_shelf"));
+    EXPECT_NE(r.output.find("kept from before: contact"), std::string::npos) << r.output;
+    // The hidden scene's goldens: their own folder and manifest, next to the scene file.
+    const fs::path own = dir / "private" / "goldens";
+    EXPECT_EQ(manifestScenes(own), std::set<std::string>{"secret_shelf"});
+    EXPECT_TRUE(fs::exists(own / "secret_shelf" / "moments_raw.exr"));
+    EXPECT_TRUE(fs::exists(own / "secret_shelf" / "msm_shadow.exr"));
+
+    // grade finds the hidden scene's goldens in its own folder: the reference scores full.
+    auto g = test::grade("--reference golden --no-report --goldens " + pub.string() +
+                             " --scenes " + hidden.string() + " --submission " +
+                             (test::root() / "reference").string(),
+                         dir / "graded");
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), 100.0) << g.results.dump(1);
+
+    // --check on the hidden scene: up to date; then stale after an edit of the scene, with
+    // advice that remakes exactly that scene.
+    auto ok = test::runCommand(test::shadowlabBinary() + " golden --check --scenes " +
+                               hidden.string() + " --out " + pub.string());
+    EXPECT_EQ(ok.exitCode, 0) << ok.output;
+    auto j = nlohmann::json::parse(std::ifstream(hidden));
+    j["description"] = "edited after its goldens were made";
+    std::ofstream(hidden) << j.dump(2);
+    auto stale = test::runCommand(test::shadowlabBinary() + " golden --check --scenes " +
+                                  hidden.string() + " --out " + pub.string());
+    EXPECT_EQ(stale.exitCode, 1) << stale.output;
+    EXPECT_NE(stale.output.find("secret_shelf: the scene file changed"), std::string::npos) << stale.output;
+    EXPECT_NE(stale.output.find("--scenes " + hidden.string()), std::string::npos) << stale.output;
+}
+
+TEST(InstructorGoldens, CheckFlagsAHiddenSceneLeftInThePublicFolder) {
+    // What the old instructions produced: a hidden scene's goldens in the public folder.
+    const fs::path dir = test::tempDir("instructor_goldens_leak");
+    const fs::path pub = copyOfPublicGoldens(dir / "public");
+    auto j = nlohmann::json::parse(std::ifstream(pub / "manifest.json"));
+    j["scenes"]["secret_shelf"] = j["scenes"]["contact"];
+    std::ofstream(pub / "manifest.json") << j.dump(2);
+    fs::copy(pub / "contact", pub / "secret_shelf");
+    auto r = test::runCommand(test::shadowlabBinary() + " golden --check --scenes classic --out " +
+                              pub.string());
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("not a public scene"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find((pub / "secret_shelf").string()), std::string::npos) << r.output;
+}
+
+}  // namespace sl
