@@ -30,7 +30,11 @@
 // sat_lookup.glsl rebuilds the box sum from them, tile by tile.
 // Measured on Mesa 22.3 llvmpipe, 1024² RGBA32F: docs/numerics.md, "Speed".
 
-#define SAT_CHUNKS 4   // invocations (chunks) per line = local_size_x
+// Measured (docs/performance.md): 16 chunks per line (short scans: 2 tiles each on 1024²) and
+// 16 lines per group, at least one SIMD vector of lines (8 lanes at 256 bits; 4 lines cost
+// 2.1 copies, lanes then straddle two chunks). 4 chunks cost 1.6-2.0 copies, 16 chunks 1.2-1.5.
+// The table does not depend on them: the sums restart at every tile.
+#define SAT_CHUNKS 16  // invocations (chunks) per line = local_size_x
 #define SAT_LINES  16  // lines per work group        = local_size_y
 #define SAT_TILE   32  // tile size; must equal SAT_TILE in sat_lookup.glsl
 
