@@ -6,6 +6,7 @@
 #include "batch.h"
 #include "cli_commands.h"
 #include "golden.h"
+#include "out_guard.h"
 #include "package.h"
 #include "grader.h"
 #include "paths.h"
@@ -36,7 +37,9 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
         ->delimiter(',');
     grade->add_option("--reference", g->o.reference, "live, golden or auto (live if reference/ exists)")
         ->check(CLI::IsMember({"live", "golden", "auto"}));
-    grade->add_option("--timeout", g->o.timeoutSeconds, "seconds per render (default 20)")
+    grade->add_option("--timeout", g->o.timeoutSeconds,
+                      "seconds per render (default: 20x the reference's own render of the scene, "
+                      "at least 5 s; 20 s with goldens only)")
         ->check(CLI::PositiveNumber);
     grade->add_option("--memory", g->o.memoryMb, "MB of address space per render (default 4096)")
         ->check(CLI::PositiveNumber);
@@ -46,11 +49,20 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
     grade->add_option("--rubric", g->o.rubric, "rubric JSON (default grader/rubric.json)");
     grade->add_flag("--no-report", g->noReport, "skip the HTML report");
     grade->add_flag("--keep-work", g->o.keepWork, "keep OUT/.work-<pid> (worker images and logs)");
+    grade->add_option("--reference-images", g->o.referenceImages)->group("");  // batch children
     grade->callback([g, &ctx] {
         if (g->submission.empty() == g->batch.empty())
             throw CLI::ValidationError("grade", "give --submission DIR or --batch DIR");
         GradeOptions o = g->o;
         o.out = g->out;
+        // OUT may not be (or hold, or sit in) the submission, scenes/, reference/, goldens.
+        const std::string outProblem = outFolderProblem(
+            o.out, guardedFolders(g->batch.empty() ? fs::path(g->submission) : fs::path(g->batch), o.goldens));
+        if (!outProblem.empty()) {
+            std::cerr << "error: " << outProblem << "\n";
+            ctx.exitCode = BadInput;
+            return;
+        }
         o.backend = ctx.backend;
         o.report = !g->noReport;
         if (!g->batch.empty()) {

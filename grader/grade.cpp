@@ -69,8 +69,9 @@ std::string fmt(double v, int digits = 2) {
 std::string failureText(const ChildResult& c, const GradeOptions& o) {
     switch (c.kind) {
         case ChildResult::TimedOut:
-            return "timed out after " + fmt(o.timeoutSeconds, 0) +
-                   " s: the render was stopped (look for a loop that never ends)";
+            return "timed out after " + fmt(c.limitSeconds, 0) + " s" + c.limitNote +
+                   ": the render was stopped (look for a loop that never ends)" +
+                   (c.skipped ? "; not run here: this stage timed out on another scene" : "");
         case ChildResult::Signalled: return "crashed: " + signalName(c.signal);
         case ChildResult::StartFailed: return "the grader could not start its worker";
         case ChildResult::Exited: break;
@@ -101,7 +102,7 @@ public:
         fs::remove_all(work, ec);
         fs::create_directories(work);
         intake_ = takeSubmission(o_.submission, work / "submission");
-        scenes_ = gradedScenes(o_.scenes);
+        scenes_ = uniqueScenes(gradedScenes(o_.scenes));
         haveRef_ = haveReference();
         mode_ = resolveReferenceMode(o_.reference);
         s.referenceMode = mode_;
@@ -154,13 +155,21 @@ public:
             phaseA.push_back(job);
         }
         Stopwatch clock;
-        runPhase(phaseA);
+        // The reference renders first: their times set the other renders' limits (jobs.h).
+        const auto isRef = [](const Job& j) { return j.stage == "reference"; };
+        std::stable_partition(phaseA.begin(), phaseA.end(), isRef);
+        const size_t refs = size_t(std::count_if(phaseA.begin(), phaseA.end(), isRef));
+        const auto times = readReferenceTimes(o_.referenceImages);
+        for (size_t i = 0; i < scenes_.size(); ++i)
+            if (times.count(scenes_[i].name)) refSeconds_[i] = times.at(scenes_[i].name);
+        runPhase(phaseA, 0, refs);
+        runPhase(phaseA, refs, phaseA.size());
         clock.lap("renders without reference input");
         // The scenes' probes hold on the reference they are graded against, or grading stops.
         checkReferenceProbes(scenes_, [this](size_t i, const std::string& image) {
             return referenceFile(i, image);
         });
-        runPhase(phaseB);
+        runPhase(phaseB, 0, phaseB.size());
         clock.lap("filter renders");
         if (mode_ == "golden") {
             for (const auto& w : manifestWarnings(readManifest(goldens_), running_))
@@ -218,23 +227,27 @@ private:
                                : goldenFolder(scenes_[scene], goldens_) / scenes_[scene].name / (image + ".exr");
     }
 
-    void runPhase(std::vector<Job>& jobs) {
+    void runPhase(std::vector<Job>& jobs, size_t from, size_t to) {
         std::vector<ChildSpec> specs;
         std::vector<size_t> index;
-        for (size_t k = 0; k < jobs.size(); ++k) {
+        for (size_t k = from; k < to; ++k) {
             Job& j = jobs[k];
             if (!j.missing.empty()) continue;
             fs::create_directories(j.out);
             const char* input = j.stage == "msm" ? "moments_filtered" : "moments_raw";
             specs.push_back(workerSpec(o_, scenes_[j.scene], j.stage,
                                        referenceFile(j.scene, input), j.out));
+            const double ref = refSeconds_.count(j.scene) ? refSeconds_.at(j.scene) : 0.0;
+            specs.back().timeoutSeconds = j.stage == "reference" ? referenceTimeout(o_) : stageTimeout(o_, ref);
+            specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
             index.push_back(k);
         }
-        auto results = runChildren(specs, {o_.timeoutSeconds, o_.memoryMb}, o_.jobs);
+        auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs);
         for (size_t k = 0; k < results.size(); ++k) {
             Job& j = jobs[index[k]];
             j.child = results[k];
             j.ran = true;
+            if (j.stage == "reference") refSeconds_[j.scene] = j.child.seconds;
             if (running_.is_null() && j.child.kind == ChildResult::Exited && j.child.exitCode == 0) {
                 std::ifstream in(j.out / "worker.json");
                 try { running_ = nlohmann::json::parse(in); } catch (...) {}
@@ -246,9 +259,9 @@ private:
     TestResult score(const Job& job, ReportWriter* report) {
         const GradedScene& gs = scenes_[job.scene];
         TestResult t;
-        t.scene = gs.name;
+        t.scene = job.stage == "robustness" ? "hard cases" : gs.name;  // one name, pass or fail
         t.stage = job.stage;
-        t.hidden = gs.hidden;
+        t.hidden = job.stage != "robustness" && gs.hidden;
         if (!job.missing.empty()) {
             t.output = job.missing;
             return t;
@@ -367,6 +380,7 @@ private:
     std::string mode_;
     fs::path goldens_;
     nlohmann::json running_;  // backend/renderer/Mesa of the workers
+    std::map<size_t, double> refSeconds_;  // scene -> its reference render's seconds
 };
 
 }  // namespace

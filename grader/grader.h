@@ -32,7 +32,7 @@ struct GradeOptions {
     fs::path out;                 // results.json, report/, .work-<pid>/ (scratch)
     std::vector<std::string> scenes;  // names; empty: every public scene with a shadowing light
     std::string reference = "auto";   // live | golden | auto (live if reference/ exists)
-    double timeoutSeconds = 20.0;
+    double timeoutSeconds = 0.0;  // 0: from the reference's own render time (jobs.h)
     long memoryMb = 4096;
     int jobs = 2;                 // workers at a time
     fs::path goldens;             // default: scenes/goldens

@@ -12,9 +12,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+extern char** environ;
+
 #include <chrono>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -29,7 +32,25 @@ struct Running {
     Clock::time_point start;
 };
 
+// The parent's environment, with Mesa's on-disk shader cache turned off.
+std::vector<std::string> childEnvironment() {
+    std::vector<std::string> env;
+    for (char** e = environ; e && *e; ++e) {
+        const std::string_view v(*e);
+        if (v.starts_with("MESA_SHADER_CACHE_DISABLE=") || v.starts_with("MESA_GLSL_CACHE_DISABLE="))
+            continue;
+        env.emplace_back(v);
+    }
+    env.push_back("MESA_SHADER_CACHE_DISABLE=true");
+    env.push_back("MESA_GLSL_CACHE_DISABLE=true");  // Mesa before 22.1
+    return env;
+}
+
 pid_t startChild(const ChildSpec& spec, const Limits& limits, const std::string& exe) {
+    std::vector<std::string> env = childEnvironment();
+    std::vector<char*> cenv;
+    for (auto& e : env) cenv.push_back(e.data());
+    cenv.push_back(nullptr);
     std::vector<std::string> argv = {exe};
     argv.insert(argv.end(), spec.args.begin(), spec.args.end());
     std::vector<char*> cargv;
@@ -55,8 +76,8 @@ pid_t startChild(const ChildSpec& spec, const Limits& limits, const std::string&
         ::close(fd);
     }
     // /proc/self/exe, not its path: the build may have replaced the file since we started.
-    ::execv("/proc/self/exe", cargv.data());
-    ::execv(cargv[0], cargv.data());
+    ::execve("/proc/self/exe", cargv.data(), cenv.data());
+    ::execve(cargv[0], cargv.data(), cenv.data());
     ::_exit(127);
 }
 
@@ -66,6 +87,12 @@ std::string readLog(const std::filesystem::path& path) {
     in.read(s.data(), std::streamsize(s.size()));
     s.resize(size_t(in.gcount()));
     return s;
+}
+
+void replaceAll(std::string& s, const std::string& from, const std::string& to) {
+    if (from.empty()) return;
+    for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+        s.replace(at, from.size(), to);
 }
 
 }  // namespace
@@ -92,9 +119,23 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
     const std::string exe = selfExecutable();
     std::vector<Running> running;
     size_t next = 0;
-    const auto timeout = std::chrono::duration<double>(limits.timeoutSeconds);
+    auto limitOf = [&](size_t i) {
+        return specs[i].timeoutSeconds > 0 ? specs[i].timeoutSeconds : limits.timeoutSeconds;
+    };
+    std::map<std::string, ChildResult> timedOutGroups;  // group -> the first timeout
     while (next < specs.size() || !running.empty()) {
         while (next < specs.size() && int(running.size()) < std::max(1, parallel)) {
+            const std::string& group = specs[next].group;
+            if (auto t = timedOutGroups.find(group); !group.empty() && t != timedOutGroups.end()) {
+                results[next] = t->second;  // the same reason, without the same wait
+                results[next].skipped = true;
+                results[next].log.clear();
+                if (done) done(next, results[next]);
+                ++next;
+                continue;
+            }
+            results[next].limitSeconds = limitOf(next);
+            results[next].limitNote = specs[next].limitNote;
             pid_t pid = startChild(specs[next], limits, exe);
             if (pid < 0) {
                 results[next].kind = ChildResult::StartFailed;
@@ -111,7 +152,7 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
             pid_t w = ::waitpid(r.pid, &status, WNOHANG);
             const auto elapsed = Clock::now() - r.start;
             ChildResult& res = results[r.index];
-            if (w == 0 && elapsed < timeout) {
+            if (w == 0 && elapsed < std::chrono::duration<double>(limitOf(r.index))) {
                 ++k;
                 continue;
             }
@@ -129,6 +170,9 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
             ::kill(-r.pid, SIGKILL);  // leftovers of the group, if any
             res.seconds = std::chrono::duration<double>(elapsed).count();
             res.log = readLog(specs[r.index].logPath);
+            for (const auto& [from, to] : specs[r.index].scrub) replaceAll(res.log, from, to);
+            if (res.kind == ChildResult::TimedOut && !specs[r.index].group.empty())
+                timedOutGroups.emplace(specs[r.index].group, res);
             if (done) done(r.index, res);
             running.erase(running.begin() + std::ptrdiff_t(k));
             progressed = true;

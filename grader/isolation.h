@@ -11,6 +11,14 @@ namespace sl::grader {
 struct ChildSpec {
     std::vector<std::string> args;   // argv[1..] for this executable (the worker subcommand)
     std::filesystem::path logPath;   // the child's stdout + stderr
+    double timeoutSeconds = 0.0;     // this child's limit; 0: Limits::timeoutSeconds
+    std::string limitNote;           // how the limit was chosen, for the message
+    // Children of one group (a stage): once one times out, the group's children not started
+    // yet are not run; they get the same TimedOut result (skipped = true). "" : no group.
+    std::string group;
+    // (text, replacement) pairs applied to the log: the grader's own paths never reach a
+    // student's message ("/work/kit/shaders/x" -> "shaders/x").
+    std::vector<std::pair<std::string, std::string>> scrub;
 };
 
 struct ChildResult {
@@ -18,6 +26,9 @@ struct ChildResult {
     int exitCode = -1;
     int signal = 0;
     double seconds = 0.0;
+    double limitSeconds = 0.0;  // the time limit it ran under
+    std::string limitNote;      // ChildSpec::limitNote
+    bool skipped = false;       // not run: its group timed out before (kind TimedOut)
     std::string log;  // the child's stdout + stderr (first 64 KiB)
 };
 
@@ -25,6 +36,9 @@ struct Limits {
     double timeoutSeconds = 20.0;
     long memoryMb = 4096;
 };
+
+// Every child runs with MESA_SHADER_CACHE_DISABLE=true (Mesa's cache is the only file a
+// render would write outside OUT) and its own process group.
 
 // The path of the running executable (/proc/self/exe): workers are this binary.
 std::string selfExecutable();

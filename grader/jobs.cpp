@@ -1,4 +1,5 @@
-// jobs: the workers' command lines and folders, and the reference renders a batch shares.
+// jobs: the workers' command lines and folders, their time limits, and the reference renders
+// a batch shares.
 #include "jobs.h"
 
 #include "paths.h"
@@ -6,6 +7,8 @@
 
 #include <unistd.h>
 
+#include <cstdio>
+#include <fstream>
 #include <stdexcept>
 
 namespace sl::grader {
@@ -29,7 +32,68 @@ ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std:
                                      "--input", input.string(),
                                      "--out", out.string()};
     if (haveReference()) args.insert(args.end(), {"--reference", (repoRoot() / "reference").string()});
-    return {args, out / "log.txt"};
+    ChildSpec spec;
+    spec.args = args;
+    spec.logPath = out / "log.txt";
+    spec.group = stage;
+    // Most specific first: the staged copies, then OUT, then the kit and the scene's folder.
+    auto dir = [](const fs::path& p) {
+        std::error_code ec;
+        const fs::path c = fs::weakly_canonical(p, ec);
+        return (ec ? p : c).string() + "/";
+    };
+    spec.scrub = {{dir(workDir(o) / "submission"), "submission/"},
+                  {dir(o.out), ""},
+                  {dir(repoRoot()), ""},
+                  {dir(scene.path.parent_path()), ""}};
+    return spec;
+}
+
+std::vector<GradedScene> uniqueScenes(const std::vector<GradedScene>& scenes) {
+    std::vector<GradedScene> out;
+    for (const auto& s : scenes) {
+        bool seen = false;
+        for (const auto& o : out) {
+            if (o.name != s.name) continue;
+            std::error_code ec;
+            if (!fs::equivalent(o.path, s.path, ec))
+                throw std::runtime_error("two scenes are named \"" + s.name +
+                                         "\": rename one of the files");
+            seen = true;
+        }
+        if (!seen) out.push_back(s);
+    }
+    return out;
+}
+
+double stageTimeout(const GradeOptions& o, double referenceSeconds) {
+    if (o.timeoutSeconds > 0) return o.timeoutSeconds;
+    if (referenceSeconds > 0) return std::max(kTimeoutFloor, kTimeoutFactor * referenceSeconds);
+    return kTimeoutDefault;
+}
+
+std::string timeoutNote(const GradeOptions& o, double referenceSeconds) {
+    if (o.timeoutSeconds > 0) return " (--timeout)";
+    if (referenceSeconds <= 0) return "";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, " (%g x the reference's %.2f s render%s)", kTimeoutFactor,
+                  referenceSeconds, kTimeoutFactor * referenceSeconds < kTimeoutFloor ? ", at least 5 s" : "");
+    return buf;
+}
+
+double referenceTimeout(const GradeOptions& o) {
+    return o.timeoutSeconds > 0 ? 4 * o.timeoutSeconds : 120.0;
+}
+
+std::map<std::string, double> readReferenceTimes(const fs::path& dir) {
+    std::map<std::string, double> times;
+    if (dir.empty()) return times;
+    std::ifstream in(dir / "times.json");
+    const auto j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_object())
+        for (const auto& [name, v] : j.items())
+            if (v.is_number()) times[name] = v.get<double>();
+    return times;
 }
 
 std::string resolveReferenceMode(const std::string& requested) {
@@ -40,13 +104,21 @@ std::string resolveReferenceMode(const std::string& requested) {
 void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
     if (!haveReference()) throw std::runtime_error("live reference renders need reference/");
     std::vector<ChildSpec> specs;
-    for (const auto& scene : gradedScenes(o.scenes)) {
+    const auto scenes = uniqueScenes(gradedScenes(o.scenes));
+    for (const auto& scene : scenes) {
         fs::create_directories(dir / scene.name);
         specs.push_back(workerSpec(o, scene, "reference", "", dir / scene.name));
+        specs.back().group.clear();
     }
-    for (const auto& r : runChildren(specs, {o.timeoutSeconds * 4, o.memoryMb}, o.jobs))
+    nlohmann::json times = nlohmann::json::object();
+    const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
+    for (size_t i = 0; i < results.size(); ++i) {
+        const auto& r = results[i];
         if (!(r.kind == ChildResult::Exited && r.exitCode == 0))
             throw std::runtime_error("a reference render failed:\n" + r.log);
+        times[scenes[i].name] = r.seconds;
+    }
+    std::ofstream(dir / "times.json") << times.dump(2) << "\n";
 }
 
 }  // namespace sl::grader

@@ -1,9 +1,12 @@
-// jobs.h: the worker command lines and folders one grade run shares with batch grading.
+// jobs.h: the worker command lines, folders and time limits one grade run shares with batch
+// grading.
 #pragma once
 
 #include "grader.h"
 #include "isolation.h"
 #include "scene_list.h"
+
+#include <map>
 
 namespace sl::grader {
 
@@ -14,7 +17,26 @@ fs::path workDir(const GradeOptions& o);
 bool haveReference();  // reference/ holds all five stage files
 
 // `shadowlab grade-worker ...` for one (scene, stage), its images and log going to `out`.
+// The log is scrubbed of the grader's own paths (submission/, shaders/ ... stay).
 ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std::string& stage,
                      const fs::path& input, const fs::path& out);
+
+// Each scene once (`--scenes classic,classic`); two different files with one name: an error.
+std::vector<GradedScene> uniqueScenes(const std::vector<GradedScene>& scenes);
+
+// Time limits. With --timeout S: S for every render. Otherwise a render may take
+// kTimeoutFactor times the reference's own render of that scene on this machine, at the same
+// time, so that a busy machine gives the same grade (at least kTimeoutFloor seconds); without
+// a reference render to time (goldens only), kTimeoutDefault.
+constexpr double kTimeoutFactor = 20.0;
+constexpr double kTimeoutFloor = 5.0;
+constexpr double kTimeoutDefault = 20.0;
+double stageTimeout(const GradeOptions& o, double referenceSeconds);
+// How stageTimeout chose: " (20 x the reference's 0.41 s render)", " (--timeout)" or "".
+std::string timeoutNote(const GradeOptions& o, double referenceSeconds);
+double referenceTimeout(const GradeOptions& o);  // a reference render's own limit
+
+// The reference renders' seconds per scene, kept next to them (REF/times.json) for a batch.
+std::map<std::string, double> readReferenceTimes(const fs::path& dir);
 
 }  // namespace sl::grader

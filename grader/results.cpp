@@ -5,6 +5,8 @@
 // errors or counts its points: the table on stdout, the top-level `output`, the warnings.
 #include "results.h"
 
+#include "out_guard.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -100,13 +102,9 @@ nlohmann::json resultsJson(const GradeSummary& s, const Rubric& rubric) {
 void writeResults(const std::filesystem::path& path, const nlohmann::json& results) {
     std::error_code ec;
     std::filesystem::create_directories(path.parent_path(), ec);
-    const auto tmp = path.string() + ".tmp";
-    {
-        std::ofstream out(tmp);
-        // NaN cannot appear in JSON: replace invalid numbers rather than fail to write.
-        out << results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-    }
-    std::filesystem::rename(tmp, path, ec);
+    // NaN cannot appear in JSON: replace invalid numbers rather than fail to write. Through
+    // a fresh temp file (O_EXCL | O_NOFOLLOW, out_guard.h): a planted link is never followed.
+    writeFileSafely(path, results.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 void writeFailureResults(const std::filesystem::path& path, const std::string& reason,

@@ -111,9 +111,16 @@ public:
         if (!n || !n.v->is_array() || n.v->size() < minSize) fail(n, what);
         return n.v->size();
     }
+    // Every number of a scene becomes a float: the range is checked on the float too, so that
+    // 1e308 (inf as a float) or 1e-300 (0 as a float, where > 0 is required) is an error.
     double number(const Node& n, const Range& r) const {
         if (!n || !n.v->is_number() || !r.contains(n.v->get<double>())) fail(n, r.describe(false));
-        return n.v->get<double>();
+        const double d = n.v->get<double>();
+        if (!r.contains(double(float(d))))
+            fail(n, r.describe(false) + " that a 32-bit float holds (|x| <= 3.4e38, and not so "
+                                        "close to 0 that it rounds to " +
+                                        formatNumber(double(float(d))) + ")");
+        return d;
     }
     int integer(const Node& n, const Range& r) const {
         if (!n || !n.v->is_number_integer() || !r.contains(n.v->get<double>()))

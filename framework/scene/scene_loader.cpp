@@ -7,6 +7,10 @@
 #include "scene.h"
 #include "scene_json.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -197,6 +201,8 @@ ShadowEffect readShadow(const Reader& R, const Node& n, bool perspective) {
                 perspective ? R.number(v[0], Range::positive()) : R.number(v[0], Range::atLeast(0));
             const double farD = R.number(v[1], Range{nearD, kInf, true, false});
             fx.depthRange = glm::vec2(float(nearD), float(farD));
+            if (!(fx.depthRange->y > fx.depthRange->x))  // distinct doubles, one float
+                R.fail(v[1], "a number > near that stays > near as a 32-bit float");
         }
     }
     if (auto v = n["filter"]) readFilter(R, v, fx);
@@ -246,9 +252,38 @@ std::string parseDetail(std::string what) {
     return what;
 }
 
+// Arrays and objects nested deeper than this are refused before nlohmann sees them: its
+// dump() (used in error messages) recurses once per level, and 100 000 levels overflow the
+// stack. A scene needs 4.
+constexpr int kMaxJsonDepth = 64;
+
+void checkDepth(const std::string& text, const std::string& path) {
+    int depth = 0;
+    bool inString = false, escaped = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (escaped) escaped = false;
+            else if (c == '\\') escaped = true;
+            else if (c == '"') inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) {
+                const std::string lc = lineColumn(text, i + 1);
+                throw SceneError(path + ":" + lc + ": invalid scene: arrays and objects nested more "
+                                 "than " + std::to_string(kMaxJsonDepth) + " deep");
+            }
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& path) {
+    checkDepth(jsonText, path);
     json root;
     try {
         root = json::parse(jsonText);
@@ -313,13 +348,33 @@ Scene parseScene(const std::string& jsonText, const std::string& path) {
 }
 
 Scene loadScene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    // A regular file, checked on the open descriptor: O_NONBLOCK so that a FIFO cannot block
+    // the open; a directory or a device is named as what it is, not as "invalid JSON".
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
         throw SceneError(path + ": expected a readable scene file, found nothing (" +
-                         std::string(errno ? std::strerror(errno) : "cannot open it") + ")");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseScene(text.str(), path);
+                         std::string(std::strerror(errno)) + ")");
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        const char* what = S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ? "a FIFO"
+                           : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                           : S_ISSOCK(st.st_mode) ? "a socket" : "not a regular file";
+        throw SceneError(path + ": expected a scene file (JSON), found " + std::string(what));
+    }
+    constexpr off_t kMaxSceneBytes = 64 << 20;
+    if (st.st_size > kMaxSceneBytes) {
+        ::close(fd);
+        throw SceneError(path + ": expected a scene file of at most 64 MiB, found " +
+                         std::to_string(st.st_size) + " bytes");
+    }
+    std::string text;
+    char buf[65536];
+    ssize_t n;
+    while ((n = ::read(fd, buf, sizeof buf)) > 0 && off_t(text.size()) <= kMaxSceneBytes)
+        text.append(buf, size_t(n));
+    ::close(fd);
+    return parseScene(text, path);
 }
 
 // Switches, not the tables above: these may be called during other files' static setup.

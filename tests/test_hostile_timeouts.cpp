@@ -1,0 +1,46 @@
+// Hostile input, issue 7 §4: time limits. A fixed 20 s limit gave a 1e9-iteration render 0 on
+// a busy machine and full marks on an idle one, and a loop in msm.glsl cost 20 s per scene.
+// The limit is now kTimeoutFactor x the reference's own render of the scene, timed on the same
+// machine in the same run (at least kTimeoutFloor s), and a stage that timed out once is not
+// run again on the other scenes: those tests get the same reason at once.
+#include "test_grader_support.h"
+
+#include <chrono>
+#include <regex>
+
+namespace sl {
+
+TEST(HostileTimeouts, TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated) {
+    // Nested loops: llvmpipe cuts each after 65 535 iterations, so this runs ~4e9 per texel.
+    std::string moments = test::readText(test::root() / "reference" / "moments.glsl");
+    const std::string head = "vec4 computeMoments(float z)\n{\n";
+    ASSERT_NE(moments.find(head), std::string::npos) << "the reference's function changed";
+    moments.replace(moments.find(head), head.size(),
+                    head + "    for (int i = 0; i < 100000; ++i)\n"
+                           "        for (int j = 0; j < 100000; ++j) z = fract(z * 1.0001 + 0.1);\n");
+    auto sub = test::makeSubmission("timeouts", {{"moments.glsl", moments}});
+    const auto start = std::chrono::steady_clock::now();
+    auto g = test::grade("--scenes classic,contact --no-report --submission " + sub.string(),
+                         test::tempDir("timeouts_out"));
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    // "timed out after N s (20 x the reference's R s render)"
+    std::smatch m;
+    const std::string first = g.output("classic", "moments");
+    ASSERT_TRUE(std::regex_search(first, m, std::regex(R"(timed out after (\d+) s \((\d+) x the reference's ([0-9.]+) s render)")))
+        << first;
+    const double limit = std::stod(m[1]), factor = std::stod(m[2]), ref = std::stod(m[3]);
+    EXPECT_EQ(factor, 20.0);
+    EXPECT_NEAR(limit, std::max(5.0, factor * ref), 1.0) << first;
+    // contact's moments stage was not run: the same reason, and no second wait.
+    const std::string second = g.output("contact", "moments");
+    EXPECT_NE(second.find("timed out after"), std::string::npos) << second;
+    EXPECT_NE(second.find("not run here"), std::string::npos) << second;
+    EXPECT_EQ(g.score("contact", "moments"), 0.0);
+    EXPECT_LT(seconds, 2 * limit + 30) << "a timeout per scene was waited for";
+    EXPECT_TRUE(g.full("contact", "sat")) << g.output("contact", "sat");
+    EXPECT_TRUE(g.full("classic", "msm")) << g.output("classic", "msm");
+}
+
+}  // namespace sl
