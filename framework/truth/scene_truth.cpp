@@ -47,7 +47,9 @@ std::string sceneTruthHash(const Scene& scene, const SceneTruthOptions& options)
     for (const Object& o : scene.objects)
         if (o.shape == ShapeType::Mesh) key += "\n" + fileBytes(o.meshPath);
     key += "\nsamples=" + std::to_string(stratifiedSide(options.rays.samples));
-    key += "\ncamera=" + std::to_string(options.camera);
+    const Camera& cam = scene.cameras.at(size_t(options.camera));
+    key += "\ncamera=" + std::to_string(options.camera) + ":" + std::to_string(cam.width) + "x" +
+           std::to_string(cam.height);  // a study may render the scene smaller than its file
     return sha256(key);
 }
 

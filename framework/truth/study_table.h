@@ -1,0 +1,48 @@
+// study_table: the study's one table (docs/accuracy.md). One row per (scene, technique,
+// parameters): shadow-map bytes, pass and frame times with their ratio to a copy pass measured
+// in the same run, and the error against both truths. Written as CSV, one row at a time, so an
+// interrupted sweep keeps what it finished; read back to resume and to draw every figure.
+#pragma once
+
+#include "error_metrics.h"
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+namespace fs = std::filesystem;
+
+struct StudyRow {
+    std::string scene, solution, technique, spec;  // spec: "vsm:bleedReduction=0.3"
+    std::string filter;        // none | gaussian | sat
+    int radius = 0;            // gaussian radius r; the SAT box is 2r + 1 texels; 0: no filter
+    double kernelTexels = 0;   // the filter's width in texels (2r + 1; 1 for none)
+    int mapSize = 0;
+    int bits = 32;             // per channel of the map
+    std::string parameters;    // the technique's resolved parameters, "name=value;..."
+    size_t mapBytes = 0;       // the technique's map (all layers)
+    size_t planBytes = 0;      // every shadow texture the plan allocates for the light
+    int repeats = 0;
+    double frameMedian = 0, frameMin = 0, frameMax = 0;  // ms, sum of the planned passes
+    std::string passTimes;     // "shadow=med/min/max;gaussian-x=...", ms
+    double copyMillis = 0;     // the copy pass (1024² RGBA32F) measured just before this row
+    double frameRatio = 0;     // frameMedian / copyMillis: travels between machines
+    ShadowError truth;         // against the ray-traced truth
+    ShadowError filtered;      // against the exact filtered visibility of the same map
+    std::string reused;        // what this row took from earlier work, in words
+    std::string image, errorMap;  // files under the study folder
+
+    std::string key() const;   // identifies the combination (resume)
+};
+
+const std::string& studyCsvHeader();
+std::string toCsvLine(const StudyRow& row);
+// Reads a study CSV; throws std::runtime_error naming the file and line of a malformed row.
+std::vector<StudyRow> readStudyCsv(const fs::path& path);
+// Appends one row (writing the header first if the file is new) and flushes it to disk.
+void appendStudyRow(const fs::path& path, const StudyRow& row);
+
+}  // namespace sl
