@@ -8,6 +8,8 @@
 #include "jobs.h"
 #include "metrics.h"
 #include "paths.h"
+#include "points.h"
+#include "depth_ladder.h"
 #include "report.h"
 #include "results.h"
 #include "rubric.h"
@@ -89,6 +91,25 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
         log.find("map") != std::string::npos)
         text += "\n(the memory limit is " + std::to_string(o.memoryMb) + " MB)";
     return text;
+}
+
+// Where the worst texel is and what it holds, so that a student can reproduce it (probe).
+std::string worstTexelText(const std::string& image, const Comparison& c) {
+    std::ostringstream o;
+    o.precision(7);
+    if (image == kDepthLadderImage) {
+        const glm::vec3 in = relativeDepthLadder().at(size_t(c.worstX));
+        o << "  worst: ladder row " << c.worstX << " (lightDepth " << in.x << ", near " << in.y
+          << ", far " << in.z << "): b" << c.worstChannel + 1 << " = " << c.worstValue
+          << ", expected " << c.worstExpected
+          << " (shadowlab probe moments --generate depth-ladder writes these rows)";
+        return o.str();
+    }
+    o << "  worst texel: x " << c.worstX << ", y " << c.worstY
+      << " (from the bottom-left; its centre is (" << c.worstX + 0.5 << ", " << c.worstY + 0.5
+      << ")), channel b" << c.worstChannel + 1 << ": " << c.worstValue << ", expected "
+      << c.worstExpected << " (" << fmt(std::min(c.worst, 1e6), 1) << "x the tolerance)";
+    return o.str();
 }
 
 class Grading {
@@ -194,19 +215,8 @@ public:
             };
             return a.scene != b.scene ? a.scene < b.scene : rank(a.stage) < rank(b.stage);
         });
-        // Weights: a stage's points are split evenly over the scenes it applies to.
-        std::map<std::string, int> count;
-        for (const auto& t : s.tests) ++count[t.stage];
-        double weightSum = 0.0;
-        for (const auto& [stage, n] : count) weightSum += rubric_.weights.count(stage) ? rubric_.weights.at(stage) : 0.0;
-        for (auto& t : s.tests) {
-            const double w = rubric_.weights.count(t.stage) ? rubric_.weights.at(t.stage) : 0.0;
-            const double max = weightSum > 0 ? rubric_.total * w / weightSum / count[t.stage] : 0.0;
-            t.score *= max;  // score() returned the fraction of points
-            t.maxScore = max;
-            s.score += t.score;
-            s.maxScore += t.maxScore;
-        }
+        // Points in exact hundredths; the rubric's filter mode (points.h).
+        assignPoints(s, rubric_);
         if (report) report->finish(s);
         clock.lap("comparisons and report");
         if (!o_.keepWork) fs::remove_all(work, ec);
@@ -255,7 +265,7 @@ private:
         }
     }
 
-    // Returns the fraction of the test's points in `score` (run() scales it).
+    // Returns the fraction of the test's points in `fraction` (assignPoints scales it).
     TestResult score(const Job& job, ReportWriter* report) {
         const GradedScene& gs = scenes_[job.scene];
         TestResult t;
@@ -291,13 +301,16 @@ private:
             if (name.rfind(prefix, 0) == 0 && (prefix != "moments_filtered" || name == prefix))
                 images.push_back(name);
         if (images.empty()) images.push_back(prefix);
-        double fraction = 1.0;
+        double fraction = 1.0, worstCap = 1.0;
         std::ostringstream detail;
         for (const auto& name : images) {
             Image ref, mine;
+            const bool ladder = name == kDepthLadderImage;
             try {
-                // msm is compared with the reference lit from the same moments (msm_<image>).
-                ref = readAnyImage(referenceFile(job.scene, job.stage == "msm" ? "msm_" + name : name));
+                // msm is compared with the reference lit from the same moments (msm_<image>);
+                // the relativeDepth ladder with its exact moments.
+                ref = ladder ? depthLadderExpected()
+                             : readAnyImage(referenceFile(job.scene, job.stage == "msm" ? "msm_" + name : name));
             } catch (const std::exception& e) {
                 t.output = "no reference image " + name + " to compare with (" + e.what() + ")";
                 return t;
@@ -309,24 +322,39 @@ private:
                 detail << name << ": no image was produced\n";
                 continue;
             }
+            if (ladder && depthLadderStub(mine)) {
+                notes += "submission/moments.glsl: relativeDepth: not implemented yet (it returns "
+                         "the stub value -1)\n";
+                continue;
+            }
             Comparison c = compare(job, mine, ref);
             fraction = std::min(fraction, c.error.empty() ? c.fraction : 0.0);
+            if (auto cap = rubric_.worstTexelCap.find(job.stage);
+                cap != rubric_.worstTexelCap.end() && c.worst > rubric_.worstTexelFactor)
+                worstCap = std::min(worstCap, cap->second);
             t.metrics[name] = c.toJson();
             t.images.push_back(name);
             detail << name << ": " << fmt(100.0 * c.fraction, 2) << "% within tolerance"
                    << "; OIIO mean " << fmt(c.mean, 6) << ", RMS " << fmt(c.rms, 6) << ", max "
                    << fmt(c.max, 6) << ", PSNR " << fmt(c.psnr, 1) << " dB";
             if (!c.error.empty()) detail << "; " << c.error;
+            if (c.worstX >= 0) detail << "; worst texel at " << fmt(std::min(c.worst, 1e6), 4) << "x the tolerance";
             if (c.nonFinite) detail << "; " << c.nonFinite << " NaN/Inf values (counted wrong)";
             if (c.stubTexels) detail << "; " << c.stubTexels << " texels hold the stub value -1";
             detail << "\n";
+            if (c.worstX >= 0 && c.worst > 1.0) detail << worstTexelText(name, c) << "\n";
             if (report) report->add(t, name, ref, mine, c);
         }
-        t.score = notes.empty() ? rubric_.points(job.stage, fraction, 1.0) : 0.0;
+        t.fraction = notes.empty() ? std::min(rubric_.points(job.stage, fraction, 1.0), worstCap) : 0.0;
         const auto [pass, zero] = rubric_.ramp(job.stage);
         std::string head;
         if (!notes.empty()) head = "not implemented: " + notes;
-        else if (t.score >= 1.0) head = "full marks\n";
+        else if (t.fraction >= 1.0) head = "full marks\n";
+        else if (worstCap < 1.0 && t.fraction == worstCap)
+            head = "worst-texel rule: a texel is off by more than " + fmt(rubric_.worstTexelFactor, 0) +
+                   "x the tolerance (look at the borders and edges), at most " +
+                   fmt(100.0 * worstCap, 0) + "% of the points; " + fmt(100.0 * fraction, 3) +
+                   "% of the texels within tolerance\n";
         else head = fmt(100.0 * fraction, 2) + "% within tolerance (full marks from " +
                     fmt(100.0 * pass, 1) + "%, none at " + fmt(100.0 * zero, 1) + "%)\n";
         if (notes.empty() && fraction == 0.0 && detail.str().find("stub value") != std::string::npos)
@@ -343,11 +371,11 @@ private:
         const auto& r = worker["robustness"];
         const double fraction = r.value("score", 0.0);
         const auto notes = worker.value("stubNotes", std::vector<std::string>{});
-        t.score = notes.empty() ? rubric_.points("robustness", fraction, 1.0) : 0.0;
+        t.fraction = notes.empty() ? rubric_.points("robustness", fraction, 1.0) : 0.0;
         t.metrics["robustness"] = r;
         const auto [pass, zero] = rubric_.ramp("robustness");
         std::string head = !notes.empty() ? "not implemented: " + notes.front() + "\n"
-                           : t.score >= 1.0 ? std::string("full marks\n")
+                           : t.fraction >= 1.0 ? std::string("full marks\n")
                            : fmt(100.0 * fraction, 2) + "% of the hard cases pass (full marks from " +
                                  fmt(100.0 * pass, 1) + "%, none at " + fmt(100.0 * zero, 1) + "%)\n";
         t.output = head + r.value("summary", std::string());
@@ -369,7 +397,9 @@ private:
                 extra[i % ref.channels] += std::fabs(ref.pixels[i]);
             for (double& e : extra) e = rubric_.satRounding * std::ldexp(e, -24) / area;
         }
-        return compareMoments(mine, ref, rubric_.momentsAbs, rubric_.momentsRel, extra);
+        if (job.stage == "moments")
+            return compareMoments(mine, ref, rubric_.momentsAbs, rubric_.momentsRel);
+        return compareMoments(mine, ref, rubric_.filterAbs, rubric_.filterRel, extra);
     }
 
     const GradeOptions& o_;

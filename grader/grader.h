@@ -60,6 +60,7 @@ struct TestResult {
     std::string output;       // reason, metrics
     nlohmann::json metrics;   // per image: fraction within tolerance, OIIO figures, NaN count
     std::vector<std::string> images;  // compared image names (report)
+    double fraction = 0.0;    // the fraction of points earned (before scaling to maxScore)
 };
 
 struct GradeSummary {
@@ -68,6 +69,8 @@ struct GradeSummary {
     std::vector<std::string> warnings;  // golden manifest mismatch, skipped scenes
     double seconds = 0.0;
     std::string referenceMode;          // "live" | "golden"
+    std::string filterMode = "both";    // the rubric's "filters": both | either
+    std::vector<std::string> notes;     // how it was graded: filter mode, points per stage
     bool failed = false;                // the grader itself failed (results.json says why)
 };
 

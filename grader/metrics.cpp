@@ -64,6 +64,10 @@ nlohmann::json Comparison::toJson() const {
                         {"non_finite", nonFinite},
                         {"stub_texels", stubTexels},
                         {"oiio", {{"mean", mean}, {"rms", rms}, {"max", max}, {"psnr", psnr}}}};
+    if (worstX >= 0)
+        j["worst_texel"] = {{"x", worstX}, {"y", worstY}, {"channel", worstChannel},
+                            {"value", std::isfinite(worstValue) ? nlohmann::json(worstValue) : nlohmann::json(nullptr)},
+                            {"expected", worstExpected}, {"error_over_tolerance", std::min(worst, 1e30)}};
     if (!error.empty()) j["error"] = error;
     return j;
 }
@@ -84,6 +88,14 @@ Comparison compareMoments(const Image& s, const Image& r, double absTol, double 
             const double e = std::isfinite(sv) ? std::fabs(sv - rv) / tol
                                                : std::numeric_limits<double>::infinity();
             worst = std::max(worst, e);
+            if (e > out.worst || out.worstX < 0) {
+                out.worst = e;
+                out.worstX = int(i % size_t(s.width));
+                out.worstY = int(i / size_t(s.width));
+                out.worstChannel = c;
+                out.worstValue = sv;
+                out.worstExpected = rv;
+            }
         }
         out.errorMap.pixels[i] = float(std::min(worst, 1e6));
         if (worst <= 1.0) ++ok;

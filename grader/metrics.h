@@ -15,6 +15,12 @@ struct Comparison {
     long stubTexels = 0;        // every channel -1 (the stub value) where the reference is not
     std::string error;          // size or channel mismatch ("" if compared)
     Image errorMap;             // one channel: error / tolerance (<= 1 passes)
+    // The worst texel (moment maps): error / tolerance there, where (x right, y up from the
+    // bottom row, as GL stores it), which channel, and the two values. So that a student can
+    // find a border bug that touches a handful of texels.
+    double worst = 0.0;
+    int worstX = -1, worstY = -1, worstChannel = -1;
+    double worstValue = 0.0, worstExpected = 0.0;
     // OpenImageIO's figures, for the report only.
     double mean = 0, rms = 0, max = 0, psnr = 0;
     nlohmann::json toJson() const;

@@ -3,12 +3,15 @@
 // and writes the same rows with the results appended. `--generate NAME` writes a named case
 // set's inputs instead (probe_cases.h). The help text below is the user documentation.
 #include "cli_commands.h"
+#include "depth_ladder.h"
 #include "gl_context.h"
 #include "image_io.h"
+#include "msm_robustness.h"
 #include "paths.h"
 #include "probe.h"
 #include "probe_cases.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -29,18 +32,25 @@ name, pass through unchanged; the results are appended as the last columns):
               with a = 3e-5 by default (float32 moments).
   moments     lightDepth,near,far -> b1,b2,b3,b4
               computeMoments(relativeDepth(lightDepth, vec2(near, far))).
-  sat-lookup  cx,cy,w,h -> b1,b2,b3,b4
+  sat-lookup  cx,cy,w,h -> b1,b2,b3,b4, expected_b1..expected_b4, max_error (and
+              texel_centres: yes when cx and cy are both texel centres i + 0.5, where the
+              grader's sat stage evaluates every box; the handout asks for 1e-4)
               satBoxAverage(table, vec2(cx, cy), vec2(w, h)) where table is what the
               solution's sat.comp makes of the moment map (--map FILE, an RGBA EXR; or
               --map-size N, a smooth synthetic map: depth z = 0.6 + 0.3*(x + 2y)/(3N)
               + 0.02*sin(x/7)*cos(y/11), moments (z, z^2, z^3, z^4)). Texel units, texel
-              i covers [i, i+1), y counts up from the bottom row (as GL stores it).
+              i covers [i, i+1), y counts up from the bottom row (as GL stores it); the
+              expected values are the exact (double) box means of that map.
 
 --generate NAME writes a case set's inputs (to --out, or stdout) instead of probing:
   msm: the hard-case catalogue's sets (`catalogue` = all of them; columns case, m1..m4,
   zf, expected, bound, note; `expected` is the exact 4MSM value at --alpha, `bound` what
-  a float32 implementation must meet; docs/numerics.md). moments: `depth-ladder`.
-  sat-lookup: `boxes` (sizes 1 .. N texels at the origin, the centre and the far corner).
+  a float32 implementation must meet; docs/numerics.md); `zf-ladder` = the fragment
+  depths of the robustness stage's monotonicity check, per case, with the exact G.
+  moments: `depth-ladder` (the grader's relativeDepth ladder: light depths in front of,
+  inside and behind three depth ranges, with the exact moments).
+  sat-lookup: `boxes` (sizes 1 .. N texels at the origin, the centre and the far corner,
+  boxes across the map's border, fractional sizes; N = --map-size, or the --map's width).
 
 Example:
   shadowlab probe msm --generate catalogue --out cases.csv
@@ -170,30 +180,75 @@ Image syntheticMomentMap(int n) {
     return img;
 }
 
+// The exact box mean of `map` over the box (centre c, size w × h, clipped to the map), in
+// double: the value a sat-lookup must reproduce (to 1e-4, docs/numerics.md).
+glm::dvec4 exactBoxMean(const Image& map, double cx, double cy, double w, double h) {
+    const double x0 = std::clamp(cx - 0.5 * w, 0.0, double(map.width)), x1 = std::clamp(cx + 0.5 * w, 0.0, double(map.width));
+    const double y0 = std::clamp(cy - 0.5 * h, 0.0, double(map.height)), y1 = std::clamp(cy + 0.5 * h, 0.0, double(map.height));
+    glm::dvec4 sum(0.0);
+    const double area = (x1 - x0) * (y1 - y0);
+    if (!(area > 0)) return sum;
+    for (int y = int(std::floor(y0)); y < int(std::ceil(y1)); ++y)
+        for (int x = int(std::floor(x0)); x < int(std::ceil(x1)); ++x) {
+            const double cover = (std::min(x1, x + 1.0) - std::max(x0, double(x))) *
+                                 (std::min(y1, y + 1.0) - std::max(y0, double(y)));
+            for (int c = 0; c < 4; ++c) sum[c] += cover * map.at(x, y, c);
+        }
+    return sum / area;
+}
+
+// "yes" when x and y are both texel centres (i + 0.5), as the grader's sat stage uses them.
+std::string texelCentres(double x, double y) {
+    auto centre = [](double v) { return v - std::floor(v) == 0.5; };
+    return centre(x) && centre(y) ? "yes" : "no";
+}
+
 Table generate(const std::string& function, const std::string& name, int mapSize, float alpha) {
     Table t;
-    if (function == "msm") {
+    if (function == "msm" && name == "zf-ladder") {
+        // The robustness stage's monotonicity ladder of every hard case (msm_robustness.h).
+        t.header = {"case", "m1", "m2", "m3", "m4", "zf", "expected"};
+        for (const auto& c : msmHardCaseCatalogue(alpha))
+            for (float z : msmMonotoneLadder(c))
+                t.rows.push_back({c.name, num(c.b.x), num(c.b.y), num(c.b.z), num(c.b.w), num(z),
+                                  num(exactMomentShadowIntensity(glm::dvec4(c.b), z, alpha))});
+    } else if (function == "msm") {
         t.header = {"case", "m1", "m2", "m3", "m4", "zf", "expected", "bound", "note"};
         const auto cases = name == "catalogue" ? msmHardCaseCatalogue(alpha) : msmCaseSet(name, alpha);
         for (const auto& c : cases)
             t.rows.push_back({c.name, num(c.b.x), num(c.b.y), num(c.b.z), num(c.b.w), num(c.zf),
                               num(c.expected), num(c.bound), c.note});
-        for (auto& row : t.rows)  // no field may split into CSV fields (no quoting)
-            for (auto& field : row)
-                for (char& ch : field) if (ch == ',') ch = ';';
     } else if (function == "moments" && name == "depth-ladder") {
-        t.header = {"lightDepth", "near", "far"};
-        for (int i = 0; i <= 40; ++i) t.rows.push_back({num(-1.0 + 0.3 * i), "1", "9"});
+        // The grader's relativeDepth ladder (depth_ladder.h), with the exact moments.
+        t.header = {"lightDepth", "near", "far", "expected_b1", "expected_b2", "expected_b3", "expected_b4"};
+        for (const glm::vec3& r : relativeDepthLadder()) {
+            const glm::dvec4 m = exactLadderMoments(r);
+            t.rows.push_back({num(r.x), num(r.y), num(r.z), num(m.x), num(m.y), num(m.z), num(m.w)});
+        }
     } else if (function == "sat-lookup" && name == "boxes") {
-        t.header = {"cx", "cy", "w", "h"};
+        // Sizes 1 .. N at texel centres at the origin, the centre and the far corner; boxes
+        // that cross the map's border; fractional sizes at fractional centres. Fits any N.
+        t.header = {"cx", "cy", "w", "h", "texel_centres"};
+        auto add = [&](double cx, double cy, double w, double h) {
+            t.rows.push_back({num(cx), num(cy), num(w), num(h), texelCentres(cx, cy)});
+        };
+        const double n = mapSize;
         for (int s = 1; s <= mapSize; s *= 2)
-            for (double c : {0.5 * s, 0.5 * mapSize, mapSize - 0.5 * s})
-                t.rows.push_back({num(c), num(c), num(s), num(s)});
+            for (double c : {0.5 * s, 0.5 * std::floor(n / 2) * 2 + 0.5 * (mapSize % 2), n - 0.5 * s})
+                add(std::floor(c) + 0.5, std::floor(c) + 0.5, s, s);
+        for (double k : {7.0, 40.5})
+            for (double c : {0.5, 1.5, std::floor(k / 2) + 0.5, n - 0.5, n - 1.5})
+                add(std::min(c, n - 0.5), std::min(c, n - 0.5), k, k);
+        for (double k : {2.5, 7.25, 40.5})
+            add(std::min(0.37 * n, n - 0.25), std::min(0.61 * n, n - 0.25), k, k * 0.5 + 1);
     } else {
         throw std::invalid_argument("no case set '" + name + "' for " + function +
-                                    " (msm: catalogue or a set in `probe --help`; moments: "
-                                    "depth-ladder; sat-lookup: boxes)");
+                                    " (msm: catalogue, zf-ladder or a set in `probe --help`; "
+                                    "moments: depth-ladder; sat-lookup: boxes)");
     }
+    for (auto& row : t.rows)  // no field may split into CSV fields (no quoting)
+        for (auto& field : row)
+            for (char& ch : field) if (ch == ',') ch = ';';
     return t;
 }
 
@@ -205,7 +260,9 @@ struct ProbeArgs {
 
 int runProbe(const ProbeArgs& a, const std::string& backend) {
     if (!a.generate.empty()) {
-        writeCsv(a.out, generate(a.function, a.generate, a.mapSize, a.alpha), {}, {});
+        // With --map, the boxes fit that map.
+        const int size = a.map.empty() || a.function != "sat-lookup" ? a.mapSize : readImage(a.map).width;
+        writeCsv(a.out, generate(a.function, a.generate, size, a.alpha), {}, {});
         return Ok;
     }
     if (a.input.empty()) throw CsvError("probe: --input cases.csv is required (or --generate NAME)");
@@ -235,6 +292,25 @@ int runProbe(const ProbeArgs& a, const std::string& backend) {
         Image map = a.map.empty() ? syntheticMomentMap(a.mapSize) : readImage(a.map);
         if (map.channels != 4) throw CsvError(a.map + ": the moment map must have 4 channels (RGBA)");
         out = probeSatBoxAverage(library, map, boxes);
+        // Like probe msm's catalogue: the exact values next to the solution's, and whether the
+        // box is centred on a texel centre (the grader's sat stage uses texel centres only).
+        for (size_t i = 0; i < out.size(); ++i) {
+            const glm::vec4 b = boxes[i];
+            const glm::dvec4 want = exactBoxMean(map, b.x, b.y, b.z, b.w);
+            double err = 0.0;
+            for (int c = 0; c < 4; ++c)
+                err = std::max(err, std::isfinite(out[i][c]) ? std::fabs(out[i][c] - want[c]) : INFINITY);
+            results.push_back({out[i].x, out[i].y, out[i].z, out[i].w, want.x, want.y, want.z, want.w, err});
+        }
+        Table shown = t;
+        if (std::find(t.header.begin(), t.header.end(), "texel_centres") == t.header.end()) {
+            for (size_t i = 0; i < shown.rows.size(); ++i)
+                shown.rows[i].push_back(texelCentres(boxes[i].x, boxes[i].y));
+            shown.header.push_back("texel_centres");
+        }
+        writeCsv(a.out, shown, {"b1", "b2", "b3", "b4", "expected_b1", "expected_b2", "expected_b3",
+                                "expected_b4", "max_error"}, results);
+        return Ok;
     }
     for (const auto& m : out) results.push_back({m.x, m.y, m.z, m.w});
     writeCsv(a.out, t, {"b1", "b2", "b3", "b4"}, results);

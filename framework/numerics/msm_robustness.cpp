@@ -21,6 +21,13 @@ std::vector<float> zfLadder() {
 
 }  // namespace
 
+std::vector<float> msmMonotoneLadder(const MsmCase& c) {
+    std::vector<float> z = zfLadder();
+    z.push_back(c.zf);
+    std::sort(z.begin(), z.end());
+    return z;
+}
+
 std::string RobustnessCase::problems() const {
     std::string p;
     auto add = [&](bool flag, const char* what) {
@@ -48,26 +55,28 @@ std::string RobustnessReport::summary(int maxListed) const {
         }
         std::snprintf(line, sizeof line,
                       "  %s: %s; b = (%.9g, %.9g, %.9g, %.9g), zf = %.9g -> G = %.9g "
-                      "(expected %.6g ± %.2g)\n",
+                      "(expected %.6g ± %.3g)\n",
                       c.input.name.c_str(), c.problems().c_str(), c.input.b.x, c.input.b.y,
                       c.input.b.z, c.input.b.w, c.input.zf, c.G, c.input.expected, c.input.bound);
         out += line;
+        if (c.nonMonotone) {
+            std::snprintf(line, sizeof line,
+                          "    G drops from %.9g at zf = %.9g to %.9g at zf = %.9g (the zf ladder: "
+                          "shadowlab probe msm --generate zf-ladder)\n",
+                          c.dropG0, c.dropZf0, c.dropG1, c.dropZf1);
+            out += line;
+        }
     }
     return out;
 }
 
 RobustnessReport probeMsmRobustness(const ShaderLibrary& library, float alpha) {
     const std::vector<MsmCase> catalogue = msmHardCaseCatalogue(alpha);
-    const std::vector<float> ladder = zfLadder();
-    const size_t L = ladder.size() + 1;  // the ladder plus the case's own zf
+    const size_t L = zfLadder().size() + 1;  // the ladder plus the case's own zf
     std::vector<glm::vec4> b;
     std::vector<float> zf;
-    for (const auto& c : catalogue) {
-        std::vector<float> z = ladder;
-        z.push_back(c.zf);
-        std::sort(z.begin(), z.end());
-        for (float v : z) b.push_back(c.b), zf.push_back(v);
-    }
+    for (const auto& c : catalogue)
+        for (float v : msmMonotoneLadder(c)) b.push_back(c.b), zf.push_back(v);
     const std::vector<float> G = probeMomentShadowIntensity(library, b, zf, alpha);
 
     RobustnessReport report;
@@ -78,7 +87,11 @@ RobustnessReport probeMsmRobustness(const ShaderLibrary& library, float alpha) {
         const float* z = &zf[i * L];
         for (size_t k = 0; k < L; ++k) {
             if (z[k] == r.input.zf) r.G = g[k];
-            if (k > 0 && g[k] < g[k - 1] - kMonotoneSlack) r.nonMonotone = true;
+            if (k > 0 && g[k] < g[k - 1] - kMonotoneSlack &&
+                (!r.nonMonotone || g[k - 1] - g[k] > r.dropG0 - r.dropG1)) {
+                r.nonMonotone = true;
+                r.dropZf0 = z[k - 1], r.dropZf1 = z[k], r.dropG0 = g[k - 1], r.dropG1 = g[k];
+            }
         }
         r.nan = std::isnan(r.G);
         r.inf = std::isinf(r.G);

@@ -25,6 +25,7 @@ struct RobustnessCase {
     bool nan = false, inf = false;
     bool outOfRange = false;   // G < 0 or G > 1
     bool nonMonotone = false;  // along a zf ladder for this b, G drops by more than kMonotoneSlack
+    float dropZf0 = 0, dropZf1 = 0, dropG0 = 0, dropG1 = 0;  // the largest such drop: G(zf0) > G(zf1)
     bool offExpected = false;  // |G − expected| > bound (only where expected is finite)
     bool ok() const { return !(nan || inf || outOfRange || nonMonotone || offExpected); }
     std::string problems() const;  // "NaN, non-monotone", or "" when ok
@@ -39,6 +40,11 @@ struct RobustnessReport {
 
 // Rounding may make even a correct float32 4MSM wobble this much as zf grows.
 constexpr float kMonotoneSlack = 1e-4f;
+
+// The fragment depths at which a case is probed for monotonicity: 49 depths evenly in
+// [-0.1, 1.1] and the case's own zf, sorted. `shadowlab probe msm --generate zf-ladder`
+// writes them for every case, so that a student can reproduce a "non-monotone in zf".
+std::vector<float> msmMonotoneLadder(const MsmCase& c);
 
 // Probes `library`'s momentShadowIntensity (uMomentBias = alpha) on the catalogue, in one
 // dispatch on the current GL context. Throws ShaderError if msm.glsl does not compile.

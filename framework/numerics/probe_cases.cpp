@@ -39,7 +39,7 @@ struct Builder {
         c.b = b;
         c.zf = zf;
         c.expected = exactMomentShadowIntensity(glm::dvec4(b), zf, alpha);
-        c.bound = 2e-4 + 4.0 * msmFloatSensitivity(b, zf, alpha);
+        c.bound = kMsmAbsoluteBound + 4.0 * msmFloatSensitivity(b, zf, alpha);
         c.note = note;
         cases.push_back(std::move(c));
     }
