@@ -89,6 +89,7 @@ nlohmann::json resultsJson(const GradeSummary& s, const Rubric& rubric) {
     if (v.hiddenTests)
         out << v.hiddenTests << " more tests on hidden scenes are graded too; they are shown "
             << "after the due date\n";
+    for (const auto& n : s.notes) out << n << "\n";
     for (const auto& w : v.warnings) out << "warning: " << w << "\n";
     if (!v.hiddenWarnings.empty())
         out << "warning: " << v.hiddenWarnings.size() << " about hidden scenes (for the course staff)\n";
@@ -118,8 +119,8 @@ void writeFailureResults(const std::filesystem::path& path, const std::string& r
 
 void printScoreTable(std::ostream& out, const GradeSummary& s) {
     const VisibleSummary v = visibleSummary(s);
-    out << "\n  stage       points      lost on\n"
-        << "  ----------  ----------  -------------------------------------------\n";
+    out << "\n  stage       points         lost on\n"
+        << "  ----------  -------------  -------------------------------------------\n";
     const auto totals = stageTotals(s, true);
     for (const auto& stage : stageNames()) {
         auto it = totals.find(stage);
@@ -127,22 +128,22 @@ void printScoreTable(std::ostream& out, const GradeSummary& s) {
         std::string lost;
         for (const auto& t : s.tests)
             if (t.stage == stage && !t.hidden && t.score < t.maxScore - 1e-9) {
-                std::string why = t.output.substr(0, t.output.find('\n'));
-                if (why.size() > 60) why = why.substr(0, 57) + "...";
-                lost += (lost.empty() ? "" : "\n                          ") + t.scene + ": " + why;
+                std::string why = t.output.substr(0, t.output.find('\n'));  // whole, never cut
+                lost += (lost.empty() ? "" : "\n                             ") + t.scene + ": " + why;
             }
         char pts[32];
-        std::snprintf(pts, sizeof pts, "%5.1f/%-5.1f", it->second.first, it->second.second);
+        std::snprintf(pts, sizeof pts, "%6.2f/%-6.2f", it->second.first, it->second.second);
         out << "  " << std::left << std::setw(10) << stage << "  " << pts << "  "
             << (lost.empty() ? "full marks" : lost) << "\n";
     }
     char total[64];
-    std::snprintf(total, sizeof total, "%5.1f/%-5.1f", v.score, v.maxScore);
-    out << "  ----------  ----------\n  total       " << total << "  (" << std::fixed
+    std::snprintf(total, sizeof total, "%6.2f/%-6.2f", v.score, v.maxScore);
+    out << "  ----------  -------------\n  total       " << total << "  (" << std::fixed
         << std::setprecision(1) << s.seconds << " s, reference: " << s.referenceMode << ")\n";
     if (v.hiddenTests)
         out << "  (visible tests only: " << v.hiddenTests
             << " tests on hidden scenes are graded too and shown after the due date)\n";
+    for (const auto& n : s.notes) out << "  " << n << "\n";
     for (const auto& w : v.warnings) out << "  warning: " << w << "\n";
     if (!v.hiddenWarnings.empty())
         out << "  warning: " << v.hiddenWarnings.size() << " about hidden scenes (for the course staff)\n";

@@ -14,9 +14,11 @@
 
 #include "grader.h"
 
+#include "depth_ladder.h"
 #include "gl_context.h"
 #include "msm_robustness.h"
 #include "pass_plan.h"
+#include "probe.h"
 #include "paths.h"
 #include "raw_image.h"
 #include "renderer.h"
@@ -130,6 +132,9 @@ void runWorker(const WorkerArgs& a) {
             plan = planPasses(scene);
         }
         result = renderer.render(scene, plan);
+        if (a.stage == "moments")  // relativeDepth outside [near, far] too (depth_ladder.h)
+            result.images[kDepthLadderImage] =
+                depthLadderImage(probeMoments(makeLibrary(a), relativeDepthLadder()));
         if (a.stage == "reference") {
             // What the msm stage is compared with: the same lighting-only render, from these
             // filtered moments, saved as "msm_<image>".
