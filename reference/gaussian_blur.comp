@@ -16,14 +16,14 @@
 // here is flat and short: the window loads in eight loops, the weights in two, and each output
 // is its own call with two tap loops (a loop over the outputs around them grew too large to
 // unroll at r = 16 and cost 6 copies). The weights are read into registers once, not per output
-// (1.9 -> 1.3 copies at r = 8). A shared-memory tile, the classic GPU design, is slower here:
+// (1.6 -> 1.25 copies at r = 8). A shared-memory tile, the classic GPU design, is slower here:
 // llvmpipe emulates shared memory and barriers per lane.
 //
 // Work-group shape 64 x 1: llvmpipe runs 8 consecutive invocations (x fastest) as the lanes of
 // one AVX2 vector (4 at 128 bits). In the y pass those lanes read 8 neighbouring texels of a
 // row (two 64-byte cache lines) and consecutive vectors continue along the row, which the
 // CPU's prefetcher follows; 8 x 8 groups walk down columns instead (one new 16 KiB-strided
-// line per load) and cost 3.5-4.3 copies at r = 8 on an AMD EPYC, against 1.3-1.5 here.
+// line per load): their y pass cost 3.5-4.3 copies at r = 8 on an AMD EPYC, 1.3-1.5 here.
 
 layout(local_size_x = 64, local_size_y = 1) in;
 
