@@ -45,7 +45,7 @@ ImageFindings findImageProblems(const Image& e, long nonFinite) {
             if (!(e.at(x, y, 0) <= 1.0f)) {  // NaN counts as failing
                 ++f.failing;
                 const int edge = std::min(std::min(x, e.width - 1 - x), std::min(y, e.height - 1 - y));
-                if (edge < f.band) ++f.failingNearBorder;
+                if (edge < f.band) ++f.failingNearBorder, f.reach = std::max(f.reach, edge + 1);
             }
         }
     return f;
@@ -63,7 +63,7 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
         out.push_back(f.scene + " (" + f.stage + ", " + f.image + "): " +
                       percent(double(f.failingNearBorder) / f.failing) + " of the " +
                       std::to_string(f.failing) + " texels outside tolerance lie within " +
-                      std::to_string(f.band) + " texels of the border (a red frame in the "
+                      std::to_string(f.reach) + " texels of the border (a red frame in the "
                       "heat-map): check the border rule" +
                       (sat ? " (the table's index -1 is the zero border; a box is clipped to "
                              "the map, docs/stage_contract.md)"

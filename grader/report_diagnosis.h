@@ -17,6 +17,7 @@ struct ImageFindings {
     long failing = 0;          // texels/pixels outside tolerance
     long failingNearBorder = 0;  // of those, within `band` texels of the image's edge
     int band = 0;
+    int reach = 0;             // the farthest of those from the edge, plus one (texels)
     long nonFinite = 0;
 };
 

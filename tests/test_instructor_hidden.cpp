@@ -13,7 +13,7 @@ namespace {
 using grader::GradeSummary;
 using grader::TestResult;
 
-TestResult test(const std::string& scene, const std::string& stage, double score, double max,
+TestResult result(const std::string& scene, const std::string& stage, double score, double max,
                 const std::string& output, bool hidden = false) {
     TestResult t;
     t.scene = scene, t.stage = stage, t.score = score, t.maxScore = max, t.output = output;
@@ -25,11 +25,11 @@ TestResult test(const std::string& scene, const std::string& stage, double score
 GradeSummary withHiddenScene() {
     GradeSummary s;
     s.referenceMode = "live";
-    s.tests = {test("classic", "moments", 10, 10, "full marks\n"),
-               test("classic", "msm", 5, 10, "96.00% within tolerance (full marks from 98.0%)\n"),
-               test("secret_shelf", "moments", 0, 10,
+    s.tests = {result("classic", "moments", 10, 10, "full marks\n"),
+               result("classic", "msm", 5, 10, "96.00% within tolerance (full marks from 98.0%)\n"),
+               result("secret_shelf", "moments", 0, 10,
                     "compile or link error:\nsubmission/moments.glsl:3: shelf-only detail\n", true),
-               test("secret_shelf", "msm", 3, 10, "91.00% within tolerance\n", true)};
+               result("secret_shelf", "msm", 3, 10, "91.00% within tolerance\n", true)};
     s.score = 18, s.maxScore = 40;
     s.warnings = {"scene secret_shelf changed since its goldens were made",
                   "ignored (not stage files): notes.txt"};
