@@ -2,13 +2,46 @@
 // the ambient term, where G is the shadow intensity of the technique compiled in:
 //   SL_TECHNIQUE_MSM4  Hamburger 4MSM from filtered moments (student: msm.glsl)
 //   SL_FILTER_SAT      the moments come from a summed-area table (student: sat_lookup.glsl)
-// Other techniques are further permutations of this one file, not copies of it.
+//   SL_TECHNIQUE_<X>   any other row of the technique table (framework/render/technique.cpp):
+//                      shaders/techniques/<x>.glsl defines shadowIntensity<X>(ShadowQuery)
+// Every technique is a permutation of this one file, not a copy of it.
+#ifdef SL_TECHNIQUE_MSM4
 #include "moments.glsl"  // relativeDepth
 
 uniform float uMomentBias;  // α, handed to msm.glsl
 #include "msm.glsl"
 #ifdef SL_FILTER_SAT
 #include "sat_lookup.glsl"
+#endif
+#else
+#include "techniques/common.glsl"
+// Helpers shared by several techniques come first: a file is included once per program,
+// even inside a branch the preprocessor drops, so a nested include would come too late.
+#include "techniques/evsm_common.glsl"
+#include "techniques/msm_hamburger.glsl"
+#if defined(SL_TECHNIQUE_HARD)
+#include "techniques/hard.glsl"
+#elif defined(SL_TECHNIQUE_SECOND_DEPTH)
+#include "techniques/second_depth.glsl"
+#elif defined(SL_TECHNIQUE_PCF)
+#include "techniques/pcf.glsl"
+#elif defined(SL_TECHNIQUE_PCSS)
+#include "techniques/pcss.glsl"
+#elif defined(SL_TECHNIQUE_VSM)
+#include "techniques/vsm.glsl"
+#elif defined(SL_TECHNIQUE_EVSM2)
+#include "techniques/evsm2.glsl"
+#elif defined(SL_TECHNIQUE_EVSM4)
+#include "techniques/evsm4.glsl"
+#elif defined(SL_TECHNIQUE_CSM)
+#include "techniques/csm.glsl"
+#elif defined(SL_TECHNIQUE_MSM4_HAUSDORFF)
+#include "techniques/msm4_hausdorff.glsl"
+#elif defined(SL_TECHNIQUE_MSM4_16BIT)
+#include "techniques/msm4_16bit.glsl"
+#elif defined(SL_TECHNIQUE_MSM_SOFT)
+#include "techniques/msm_soft.glsl"
+#endif
 #endif
 
 #define SL_MAX_LIGHTS 4
@@ -31,13 +64,20 @@ uniform float uLightCosHalfCone[SL_MAX_LIGHTS];
 uniform int uLightShadowMap[SL_MAX_LIGHTS];  // index into uShadowMaps, -1: casts no shadow
 uniform mat4 uLightViewProjection[SL_MAX_LIGHTS];
 uniform vec2 uLightDepthRange[SL_MAX_LIGHTS];
-uniform sampler2D uShadowMaps[SL_MAX_LIGHTS];  // filtered moments, or their SAT
 uniform float uDepthBias;   // subtracted from the fragment's relative depth (acne)
+#ifdef SL_TECHNIQUE_MSM4
+uniform sampler2D uShadowMaps[SL_MAX_LIGHTS];  // filtered moments, or their SAT
 uniform float uSatKernel;   // box size in texels (SL_FILTER_SAT)
+#else
+uniform float uLightSize[SL_MAX_LIGHTS];          // emitter diameter (PCSS, msm-soft)
+uniform float uLightFrustumScale[SL_MAX_LIGHTS];  // frustum width: spot × depth; directional
+uniform float uNormalOffset = 0.0;                // texels along the normal (hard, pcf, pcss)
+#endif
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out float outShadow;  // G of the first shadowing light
 
+#ifdef SL_TECHNIQUE_MSM4
 // G for light i at world position p; 0 outside the light's shadow frustum.
 float shadowIntensity(int i, vec3 p) {
     vec4 clip = uLightViewProjection[i] * vec4(p, 1.0);
@@ -55,6 +95,34 @@ float shadowIntensity(int i, vec3 p) {
 #endif
     return momentShadowIntensity(b, zf);
 }
+#else
+// G for light i at world position p from the technique's row; 0 outside the light's frustum.
+float shadowIntensity(int i, vec3 p) {
+    vec3 n = normalize(vWorldNormal);
+    vec3 l = uLightIsSpot[i] != 0 ? normalize(uLightEye[i] - p) : -uLightForward[i];
+    float cosTheta = clamp(abs(dot(n, l)), 1e-4, 1.0);
+    float d0 = dot(p - uLightEye[i], uLightForward[i]);
+    float frustum = uLightIsSpot[i] != 0 ? uLightFrustumScale[i] * d0 : uLightFrustumScale[i];
+    // Normal offset: move the receiver along its normal (toward the light's side) by texels.
+    p += (dot(n, l) < 0.0 ? -n : n) * (uNormalOffset * frustum / uMapTexels.x);
+    vec4 clip = uLightViewProjection[i] * vec4(p, 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
+    ShadowQuery q;
+    q.map = uLightShadowMap[i];
+    q.uv = ndc.xy * 0.5 + 0.5;
+    q.receiverDepth = dot(p - uLightEye[i], uLightForward[i]);
+    q.depthRange = uLightDepthRange[i];
+    q.zf = techniqueRelativeDepth(q.receiverDepth, q.depthRange) - uDepthBias;
+    q.tanTheta = min(sqrt(1.0 - cosTheta * cosTheta) / cosTheta, 10.0);
+    q.isSpot = uLightIsSpot[i];
+    q.frustumScale = uLightFrustumScale[i];
+    q.lightSize = uLightSize[i];
+    q.texelWorld = texelWorldAt(q, q.receiverDepth);
+    q.texelDepth = q.texelWorld / (q.depthRange.y - q.depthRange.x);
+    return SL_SHADOW_INTENSITY(q);
+}
+#endif
 
 void main() {
     vec3 n = normalize(vWorldNormal);

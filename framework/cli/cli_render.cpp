@@ -10,6 +10,7 @@
 #include "render_output.h"
 #include "renderer.h"
 #include "scene.h"
+#include "technique.h"
 
 #include <cstdio>
 #include <fstream>
@@ -22,19 +23,39 @@ void addBenchCommand(CLI::App& app, Context& ctx);  // bench (cli_bench.cpp)
 namespace {
 
 int runRender(const std::string& scenePath, const std::string& solution,
-              const std::string& outDir, const std::string& backend, bool explain) {
-    Scene scene = loadScene(scenePath);
+              const std::string& outDir, const std::string& backend, bool explain,
+              const std::string& techniques) {
+    const Scene loaded = loadScene(scenePath);
     fs::path solutionDir = resolveSolution(solution);
     auto context = createContext(parseBackendKind(backend));
-    PassPlan plan = planPasses(scene);
     Renderer renderer(ShaderLibrary::forSolution(solutionDir, repoRoot()));
-    RenderResult result = renderer.render(scene, plan);
-    writeRenderOutputs(scene, plan, result, {solution, context->info()}, outDir);
-    if (explain) std::cout << explainPlan(scene, plan, &result.passMillis);
-    for (const auto& note : result.stubNotes) std::cout << "note: " << note << "\n";
-    std::cout << "wrote " << outDir << "/{final,shadow,moments_raw,moments_filtered}.{exr,png} "
-              << "and render.json (" << context->info().backend << ", "
-              << context->info().renderer << ")\n";
+    // `--technique T[,T2,...]`: one render per technique; several go to <out>/<name>/.
+    std::vector<std::string> specs;
+    for (size_t start = 0; !techniques.empty() && start <= techniques.size();) {
+        size_t comma = techniques.find(',', start);
+        if (comma == std::string::npos) comma = techniques.size();
+        specs.push_back(techniques.substr(start, comma - start));
+        start = comma + 1;
+    }
+    if (specs.size() == 1 && specs[0] == "all") specs = techniqueNames();
+    if (specs.empty()) specs.push_back("");
+    for (const std::string& spec : specs) {
+        Scene scene = loaded;
+        fs::path out = outDir;
+        if (!spec.empty()) {
+            auto [technique, parameters] = parseTechniqueSpec(spec);
+            overrideTechnique(scene.shadow, technique, parameters);
+            if (specs.size() > 1) out /= toString(technique);
+        }
+        PassPlan plan = planPasses(scene);
+        RenderResult result = renderer.render(scene, plan);
+        writeRenderOutputs(scene, plan, result, {solution, context->info()}, out);
+        if (explain) std::cout << explainPlan(scene, plan, &result.passMillis);
+        for (const auto& note : result.stubNotes) std::cout << "note: " << note << "\n";
+        std::cout << "wrote " << out.string() << "/{final,shadow,moments_raw,moments_filtered}.{exr,png} "
+                  << "and render.json (" << toString(scene.shadow.technique) << ", "
+                  << context->info().backend << ", " << context->info().renderer << ")\n";
+    }
     return Ok;
 }
 
@@ -45,6 +66,7 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
     struct RenderArgs {
         std::string scene, solution = "reference", out = "out";
         bool explain = false;
+        std::string technique;
     };
     auto args = std::make_shared<RenderArgs>();
     render->add_option("--scene", args->scene, "scene JSON file")->required();
@@ -52,8 +74,12 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
                        "reference, student, or a folder of stage files");
     render->add_option("--out", args->out, "output folder");
     render->add_flag("--explain", args->explain, "print the pass plan and the time of each pass");
+    render->add_option("--technique", args->technique,
+                       "override the scene's technique: T[,T2,...] or all; T may carry parameters, "
+                       "T:name=value[:name=value] (docs/techniques.md)");
     render->callback([args, &ctx] {
-        ctx.exitCode = runRender(args->scene, args->solution, args->out, ctx.backend, args->explain);
+        ctx.exitCode = runRender(args->scene, args->solution, args->out, ctx.backend, args->explain,
+                                 args->technique);
     });
 
     addBenchCommand(app, ctx);  // cli_bench.cpp

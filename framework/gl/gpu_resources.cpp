@@ -10,6 +10,7 @@ namespace {
 int channelsOf(GLenum format) {
     switch (format) {
         case GL_RGBA32F: return 4;
+        case GL_RGBA16: return 4;  // UNORM16 (msm4-16bit), read back as floats in [0, 1]
         case GL_RG32F: return 2;
         case GL_R32F: return 1;
         case GL_DEPTH_COMPONENT32F: return 1;
@@ -20,6 +21,7 @@ int channelsOf(GLenum format) {
 GLenum pixelFormatOf(GLenum format) {
     switch (format) {
         case GL_RGBA32F: return GL_RGBA;
+        case GL_RGBA16: return GL_RGBA;
         case GL_RG32F: return GL_RG;
         case GL_R32F: return GL_RED;
         case GL_DEPTH_COMPONENT32F: return GL_DEPTH_COMPONENT;

@@ -1,5 +1,10 @@
-// planPasses: derive the pass list from the scene (see pass_plan.h).
+// planPasses: derive the pass list and its textures from the scene and its technique's row
+// (see pass_plan.h).
 #include "pass_plan.h"
+
+#include "technique.h"
+
+#include <GL/glcorearb.h>
 
 #include <cstdio>
 
@@ -8,6 +13,7 @@ namespace sl {
 const char* toString(PassKind kind) {
     switch (kind) {
         case PassKind::Shadow: return "shadow";
+        case PassKind::ShadowSecond: return "shadow-second";
         case PassKind::GaussianX: return "gaussian-x";
         case PassKind::GaussianY: return "gaussian-y";
         case PassKind::SatRows: return "sat-rows";
@@ -18,46 +24,114 @@ const char* toString(PassKind kind) {
     return "?";
 }
 
-static int channelsFor(Technique technique) {
-    switch (technique) {
-        case Technique::Msm4: return 4;  // b = (z, z², z³, z⁴)
-    }
-    return 4;
+const PlannedTexture* PassPlan::texture(int light, const std::string& role) const {
+    for (const auto& t : textures)
+        if (t.light == light && t.role == role) return &t;
+    return nullptr;
 }
+
+size_t PassPlan::bytes(int light) const {
+    size_t sum = 0;
+    for (const auto& t : textures)
+        if (t.light >= 0 && (light < 0 || t.light == light)) sum += t.bytes;
+    return sum;
+}
+
+namespace {
+
+PlannedTexture tex(int light, int camera, std::string role, std::string format, unsigned gl,
+                   int w, int h, int layers, int bytesPerTexel) {
+    return {light, camera, std::move(role), std::move(format), gl, w, h, layers,
+            size_t(w) * h * layers * bytesPerTexel};
+}
+
+}  // namespace
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
     PassPlan plan;
     const ShadowEffect& fx = scene.shadow;
+    const TechniqueRow& row = techniqueRow(fx.technique);
+    const MapLayout map = mapLayout(fx);
+    const int n = fx.mapSize;
+    const bool filterPasses = !row.filterInLighting;
     for (int i = 0; i < int(scene.lights.size()); ++i) {
         if (!scene.lights[i].castsShadows) continue;
         plan.shadowLights.push_back(i);
         const std::string light = "light " + std::to_string(i);
-        plan.passes.push_back({PassKind::Shadow, i, -1, light + " casts shadows"});
+        auto add = [&](PlannedTexture t) { plan.textures.push_back(std::move(t)); };
+        add(tex(i, -1, "depth", "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
+        add(tex(i, -1, "raw", map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
+        plan.passes.push_back(
+            {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, "raw"});
+        if (row.secondDepth) {
+            add(tex(i, -1, "second", "R32F", GL_R32F, n, n, 1, 4));
+            plan.passes.push_back({PassKind::ShadowSecond, i, -1,
+                                   "second-depth: peel the first surface, store the midpoint",
+                                   "second"});
+        }
+        if (!filterPasses) continue;
         switch (fx.filter) {
             case FilterKind::None: break;
             case FilterKind::Gaussian: {
                 const std::string why = "gaussian filter, radius " +
                                         std::to_string(fx.gaussianRadius);
-                plan.passes.push_back({PassKind::GaussianX, i, -1, why});
-                plan.passes.push_back({PassKind::GaussianY, i, -1, why});
+                add(tex(i, -1, "scratch", map.formatName, map.glFormat, n, n, map.layers,
+                        map.bytesPerTexel));
+                add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
+                        map.bytesPerTexel));
+                plan.passes.push_back({PassKind::GaussianX, i, -1, why, "scratch"});
+                plan.passes.push_back({PassKind::GaussianY, i, -1, why, "filtered"});
                 break;
             }
             case FilterKind::Sat: {
                 char why[64];
                 std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels",
                               fx.satKernelTexels);
-                plan.passes.push_back({PassKind::SatRows, i, -1, why});
-                plan.passes.push_back({PassKind::SatColumns, i, -1, why});
-                if (options.resolveSat)
-                    plan.passes.push_back(
-                        {PassKind::SatResolve, i, -1, "filtered moments requested as output"});
+                if (row.studentStages) {
+                    add(tex(i, -1, "scratch", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
+                    add(tex(i, -1, "sat", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
+                    plan.passes.push_back({PassKind::SatRows, i, -1, why, "scratch"});
+                    plan.passes.push_back({PassKind::SatColumns, i, -1, why, "sat"});
+                    if (options.resolveSat) {
+                        add(tex(i, -1, "filtered", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
+                        plan.passes.push_back({PassKind::SatResolve, i, -1,
+                                               "filtered moments requested as output",
+                                               "filtered"});
+                    }
+                } else {
+                    // Double-float pairs: float32 sums of a 1024² map lose the digits a box
+                    // average needs; hi + lo keep ~48 bits (docs/techniques.md).
+                    const int bpt = map.channels * 4;
+                    add(tex(i, -1, "sat-hi", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
+                    add(tex(i, -1, "sat-lo", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
+                    plan.passes.push_back({PassKind::SatRows, i, -1, why, "sat-hi"});
+                    plan.passes.push_back({PassKind::SatColumns, i, -1, why + std::string(", in place"),
+                                           "sat-hi"});
+                }
                 break;
             }
         }
     }
-    if (!plan.shadowLights.empty()) plan.momentChannels = channelsFor(fx.technique);
-    for (int c = 0; c < int(scene.cameras.size()); ++c)
-        plan.passes.push_back({PassKind::Lighting, -1, c, "camera '" + scene.cameras[c].name + "'"});
+    if (!plan.shadowLights.empty()) {
+        plan.momentChannels = map.channels * map.layers;
+        if (fx.technique == Technique::Csm)
+            plan.momentChannels = 2 * int(techniqueParameter(fx, "terms"));
+    }
+    plan.defines = techniqueDefines(fx);
+    for (int c = 0; c < int(scene.cameras.size()); ++c) {
+        const Camera& cam = scene.cameras[c];
+        std::string why = "camera '" + cam.name + "'";
+        if (!plan.shadowLights.empty()) {
+            why += ", " + row.name;
+            if (row.filterInLighting) why += std::string(" (") + toString(fx.filter) + " kernel)";
+            if (row.blockerSearch) why += " + blocker search";
+        }
+        plan.textures.push_back(tex(-1, c, "color", "RGBA32F", GL_RGBA32F, cam.width, cam.height, 1, 16));
+        plan.textures.push_back(tex(-1, c, "shadow", "R32F", GL_R32F, cam.width, cam.height, 1, 4));
+        plan.textures.push_back(tex(-1, c, "camera-depth", "DEPTH32F", GL_DEPTH_COMPONENT32F,
+                                    cam.width, cam.height, 1, 4));
+        plan.passes.push_back({PassKind::Lighting, -1, c, why, "color"});
+    }
     return plan;
 }
 
@@ -67,11 +141,31 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
                       " passes, technique " + toString(scene.shadow.technique) + ", filter " +
                       toString(scene.shadow.filter) + ", moments " +
                       std::to_string(plan.momentChannels) + " channels):\n";
+    const auto params = resolvedParameters(scene.shadow);
+    if (!params.empty()) {
+        out += "  parameters:";
+        for (const auto& [name, value] : params) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, " %s=%g", name.c_str(), value);
+            out += buf;
+        }
+        out += "\n";
+    }
     double total = 0.0;
     for (size_t i = 0; i < plan.passes.size(); ++i) {
         const PlannedPass& p = plan.passes[i];
-        char line[256];
-        std::snprintf(line, sizeof line, "  %2zu. %-12s %-30s", i + 1, toString(p.kind),
+        const PlannedTexture* t = nullptr;
+        for (const auto& candidate : plan.textures)
+            if (candidate.role == p.writes &&
+                (p.light >= 0 ? candidate.light == p.light : candidate.camera == p.camera))
+                t = &candidate;
+        char fmt[48] = "";
+        if (t)
+            std::snprintf(fmt, sizeof fmt, "%s%s %7.2f MiB", t->format.c_str(),
+                          t->layers > 1 ? ("×" + std::to_string(t->layers)).c_str() : "",
+                          t->bytes / 1048576.0);
+        char line[384];
+        std::snprintf(line, sizeof line, "  %2zu. %-13s %-22s %-40s", i + 1, toString(p.kind), fmt,
                       p.why.c_str());
         out += line;
         if (millis && i < millis->size()) {
@@ -81,8 +175,10 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
         }
         out += "\n";
     }
+    char line[96];
+    std::snprintf(line, sizeof line, "  shadow-map memory %.2f MiB\n", plan.bytes() / 1048576.0);
+    out += line;
     if (millis) {
-        char line[64];
         std::snprintf(line, sizeof line, "  total %44.2f ms\n", total);
         out += line;
     }

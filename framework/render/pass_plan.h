@@ -1,49 +1,76 @@
-// PassPlan: the passes a scene's declared effects need, in execution order — and no others.
-// A scene with no shadowing light has no shadow pass; a filter of `none` dispatches nothing;
-// a light's shadow map is rendered once however many cameras see it.
+// PassPlan: the passes a scene's declared effects need, in execution order — and no others —
+// with every texture they allocate. The technique's row (technique.h) decides the shadow map's
+// format and channels, the filter passes (none for hard, PCF, PCSS), the SAT, the second-depth
+// pass and the lighting permutation. A scene with no shadowing light has no shadow pass and no
+// map; a filter of `none` dispatches nothing; a light's map is rendered once for all cameras.
 #pragma once
 
 #include "scene.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace sl {
 
 enum class PassKind {
-    Shadow,      // light view: moments.glsl writes the moments into the shadow map
-    GaussianX,   // gaussian_blur.comp along rows
-    GaussianY,   // gaussian_blur.comp along columns
-    SatRows,     // sat.comp prefix sums along rows
-    SatColumns,  // sat.comp prefix sums along columns
-    SatResolve,  // sat_lookup.glsl at every texel: the filtered moments, for output only
-    Lighting,    // camera view: msm.glsl (and sat_lookup.glsl) shade the image
+    Shadow,        // light view: stores the technique's map (msm4: moments.glsl)
+    ShadowSecond,  // second-depth: peels the first surface, stores the midpoint depth
+    GaussianX,     // Gaussian along rows (msm4: gaussian_blur.comp)
+    GaussianY,     // Gaussian along columns
+    SatRows,       // prefix sums along rows (msm4: sat.comp)
+    SatColumns,    // prefix sums along columns
+    SatResolve,    // sat_lookup.glsl at every texel: the filtered moments, for output only
+    Lighting,      // camera view: the technique's shadowIntensity... shades the image
 };
 
 const char* toString(PassKind);
+
+// A texture the plan allocates. Roles per light: "depth" (the shadow pass's depth buffer),
+// "raw" (the technique's map), "second" (second-depth midpoint), "scratch" and "filtered"
+// (Gaussian), "sat" (msm4's SAT), "sat-hi"/"sat-lo" (the framework SAT as double-float pairs);
+// per camera: "color", "shadow", "camera-depth".
+struct PlannedTexture {
+    int light = -1;
+    int camera = -1;
+    std::string role;
+    std::string format;      // "RGBA32F", "R32F", "RGBA16", "DEPTH32F", ...
+    unsigned glFormat = 0;
+    int width = 0, height = 0;
+    int layers = 1;          // textures of this role (CSM: several RGBA32F maps)
+    size_t bytes = 0;        // all layers
+};
 
 struct PlannedPass {
     PassKind kind;
     int light = -1;   // index into Scene::lights (shadow and filter passes)
     int camera = -1;  // index into Scene::cameras (lighting passes)
     std::string why;  // which declared effect calls for it
+    std::string writes;  // the role it writes ("raw", "filtered", ...)
 };
 
 struct PlanOptions {
     // Produce the filtered moment map of a SAT scene (the SAT itself is not a moment map).
-    // The grader and `render` want it; an interactive viewer does not.
+    // The grader and `render` want it; an interactive viewer does not. (msm4 only: the
+    // framework's SAT is read directly by its lighting functions.)
     bool resolveSat = true;
 };
 
 struct PassPlan {
     std::vector<PlannedPass> passes;
     std::vector<int> shadowLights;  // lights that get a shadow map, in order
-    int momentChannels = 0;         // channels the shadow map stores (MSM: 4; none: 0)
+    int momentChannels = 0;         // channels the map stores in all (MSM: 4; CSM: 2M; none: 0)
+    std::vector<PlannedTexture> textures;  // everything the renderer allocates, nothing else
+    std::vector<std::string> defines;      // the permutation of the shadow/lighting programs
+
+    const PlannedTexture* texture(int light, const std::string& role) const;
+    size_t bytes(int light = -1) const;    // of one light's textures; -1: all shadow textures
 };
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options = {});
 
-// The plan as text, one numbered line per pass; with `millis` (one per pass) the time of each.
+// The plan as text: technique and parameters, then one numbered line per pass with the format
+// and memory it writes and why it runs; with `millis` (one per pass) the time of each.
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis = nullptr);
 

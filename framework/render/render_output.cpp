@@ -2,6 +2,7 @@
 #include "render_output.h"
 
 #include "image_io.h"
+#include "technique.h"
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +32,22 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
                           {"why", plan.passes[i].why},
                           {"milliseconds", i < result.passMillis.size() ? result.passMillis[i]
                                                                         : 0.0}});
+    nlohmann::json parameters = nlohmann::json::object();
+    for (const auto& [name, value] : resolvedParameters(scene.shadow)) parameters[name] = value;
+    nlohmann::json maps = nlohmann::json::array();
+    for (const PlannedTexture& t : plan.textures)
+        if (t.light >= 0)
+            maps.push_back({{"light", t.light}, {"role", t.role}, {"format", t.format},
+                            {"width", t.width}, {"height", t.height}, {"layers", t.layers},
+                            {"bytes", t.bytes}});
+    nlohmann::json technique = {
+        {"name", toString(scene.shadow.technique)},
+        {"filter", toString(scene.shadow.filter)},
+        {"parameters", parameters},
+        {"channels", plan.momentChannels},
+        {"maps", maps},
+        {"shadowMapBytes", plan.bytes()},
+    };
     nlohmann::json sidecar = {
         {"scene", scene.path},
         {"solution", meta.solution},
@@ -38,6 +55,7 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
         {"renderer", meta.context.renderer},
         {"glVersion", meta.context.version},
         {"mesaVersion", meta.context.mesaVersion},
+        {"technique", technique},
         {"passes", passes},
         {"notImplemented", result.stubNotes},
         {"sha256", files},

@@ -20,7 +20,8 @@ struct RenderMetadata {
 
 // Writes <name>.exr for every image, PNG previews (moment maps as colour: RGB = b1, b2, b3;
 // shadow as grey; final colour sRGB-encoded) and render.json: scene, solution, backend,
-// renderer, Mesa version, plan with per-pass times, SHA-256 of every file, stub notes.
+// renderer, Mesa version, technique (name, parameters, formats and bytes of every map), plan
+// with per-pass times, SHA-256 of every file, stub notes.
 // Returns the sidecar.
 nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
                                   const RenderResult& result, const RenderMetadata& meta,

@@ -59,6 +59,17 @@ private:
     // The program a pass kind runs: the one place that names its files and permutation.
     // `blurRadius`: Gaussian passes; `defines`: the technique/filter ones of the scene.
     GlProgram& passProgram(PassKind kind, int blurRadius, const std::vector<std::string>& defines);
+    // The framework's programs of the techniques other than msm4 (shaders/techniques/): their
+    // maps are not RGBA32F, so the student's filter stages cannot run on them.
+    GlProgram& techniqueProgram(PassKind kind, bool studentStages, unsigned mapFormat,
+                                const std::vector<std::string>& defines);
+    // Any map format: the same Gaussian weights as gaussianPass, src -> dst.
+    void techniqueGaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
+                               glm::ivec2 direction);
+    // The SAT as double-float pairs: rows from `src` into (hi, lo); columns in place.
+    void techniqueSatPass(const Texture& src, const Texture& hi, const Texture& lo,
+                          glm::ivec2 direction);
+    const BufferHandle& weightsBuffer(int radius, float sigma);
     void dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction, bool wholeLine);
 
     ShaderLibrary library_;

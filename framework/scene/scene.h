@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -41,8 +42,6 @@ struct Light {
     float coneDegrees = 60.0f;    // spot: full opening angle of the cone (and of its shadow frustum)
     float extent = 10.0f;         // directional: half-width of the orthographic shadow frustum
     float size = 0.0f;            // world-space size of the emitter, for soft shadows (0: point)
-    glm::vec2 rectangle{0.0f};    // "size": [w, h]: a w × h rectangular emitter (size = max);
-                                  // else a disk of diameter `size` (truth/, docs/scenes.md)
     bool castsShadows = true;
 };
 
@@ -71,8 +70,11 @@ struct Object {
     bool castsShadows = true;
 };
 
-// The shadow technique. Only MSM is built; the others are the seams the plan grows along.
-enum class Technique { Msm4 };
+// The shadow technique: a row of the technique table (render/technique.h), in the table's order.
+// Msm4 is the student stages' row.
+enum class Technique {
+    Hard, SecondDepth, Pcf, Pcss, Vsm, Evsm2, Evsm4, Csm, Msm4, Msm4Hausdorff, Msm4_16bit, MsmSoft
+};
 enum class FilterKind { None, Gaussian, Sat };
 
 struct ShadowEffect {
@@ -85,6 +87,9 @@ struct ShadowEffect {
     float satKernelTexels = 9.0f;         // box width in texels, fractional allowed
     float momentBias = 3.0e-5f;           // α
     float depthBias = 0.0f;               // subtracted from the fragment's relative depth
+    // The technique's own parameters as the scene gives them (`shadow.parameters`); the
+    // table's defaults fill the rest (techniqueParameter in technique.h).
+    std::map<std::string, double> parameters;
 };
 
 // A pixel of the shadow image whose intensity the scene's author knows, so that a test can

@@ -6,6 +6,7 @@
 // as "<file>:<line>:<column>: invalid JSON ...".
 #include "scene.h"
 #include "scene_json.h"
+#include "technique.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -29,7 +30,6 @@ using namespace scene_json;
 const std::vector<std::string> kLightTypes = {"spot", "directional"};
 const std::vector<std::string> kShapes = {"plane", "box", "sphere", "cylinder", "torus", "mesh"};
 const std::vector<std::string> kFilters = {"none", "gaussian", "sat"};
-const std::vector<std::string> kTechniques = {"msm4"};
 
 Camera readCamera(const Reader& R, const Node& n, bool nameRequired) {
     R.object(n, {"name", "position", "target", "up", "fovYDegrees", "near", "far", "width", "height"},
@@ -182,10 +182,11 @@ void readFilter(const Reader& R, const Node& n, ShadowEffect& fx) {
 
 // `perspective`: a spot light casts shadows, whose projection needs an explicit near > 0.
 ShadowEffect readShadow(const Reader& R, const Node& n, bool perspective) {
-    R.object(n, {"technique", "mapSize", "depthRange", "filter", "momentBias", "depthBias"},
+    R.object(n, {"technique", "mapSize", "depthRange", "filter", "momentBias", "depthBias",
+                 "parameters"},
              "the shadow effect");
     ShadowEffect fx;
-    if (auto v = n["technique"]) fx.technique = Technique(R.choice(v, kTechniques));
+    if (auto v = n["technique"]) fx.technique = Technique(R.choice(v, techniqueNames()));
     if (auto v = n["mapSize"]) {
         const int size = R.integer(v, Range::closed(64, 4096));
         if (size & (size - 1)) R.fail(v, "a power of two in [64, 4096]");
@@ -208,6 +209,8 @@ ShadowEffect readShadow(const Reader& R, const Node& n, bool perspective) {
     if (auto v = n["filter"]) readFilter(R, v, fx);
     if (auto v = n["momentBias"]) fx.momentBias = float(R.number(v, Range::closed(0, 0.1)));
     if (auto v = n["depthBias"]) fx.depthBias = float(R.number(v, Range::closed(0, 0.1)));
+    // The technique's row checks its filter and parameters (render/technique.h).
+    validateTechnique(fx, bool(n["filter"]), n["parameters"].v, R.file(), n.ptr);
     return fx;
 }
 
@@ -404,11 +407,6 @@ const char* toString(FilterKind f) {
     }
     return "?";
 }
-const char* toString(Technique t) {
-    switch (t) {
-        case Technique::Msm4: return "msm4";
-    }
-    return "?";
-}
+// toString(Technique): the technique table's name (render/technique.cpp).
 
 }  // namespace sl

@@ -1,0 +1,102 @@
+// Technique table: every shadow technique of the kit as one row — what its shadow map stores
+// (format, channels, layers), which filters it allows, the GLSL file of its lighting function,
+// the permutation defines, and its parameters with their defaults. planPasses reads the row;
+// the renderer never branches on a technique's name. The five student stages are the `msm4` row.
+// (docs/techniques.md explains each row; the enum `Technique` in scene.h is in the table's order.)
+#pragma once
+
+#include "scene.h"
+
+#include <glm/glm.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sl {
+
+struct TechniqueParameter {
+    std::string name;         // key in shadow.parameters; the lighting uniform is u<Name>
+    double defaultValue = 0.0;
+    double min = 0.0, max = 0.0;
+    bool integer = false;
+    bool compileTime = false; // a #define of the permutation (e.g. the CSM term count)
+    std::string meaning;
+};
+
+struct TechniqueRow {
+    Technique id;
+    std::string name;             // the scene's shadow.technique
+    std::string summary;          // one line, for --explain and the contact sheet
+    std::string stored;           // what a texel of the map holds, in words
+    int channels = 1;             // per layer (CSM: 4 per layer, 2M in all)
+    int bitsPerChannel = 32;      // 16: UNORM16, 32: float
+    std::vector<FilterKind> filters;  // allowed; the first is the default
+    bool filterInLighting = false;    // the kernel is evaluated by the lighting pass (PCF)
+    bool studentStages = false;       // msm4: the student's five stage files run
+    bool secondDepth = false;         // a second (peeling) shadow pass stores the midpoint
+    bool blockerSearch = false;       // the lighting pass searches blockers first (PCSS, msm-soft)
+    std::string lightingFile;         // the file defining its shadowIntensity... function
+    std::string define;               // SL_TECHNIQUE_<NAME>
+    std::string storeDefine;          // what shaders/techniques/store.frag writes
+    std::vector<TechniqueParameter> parameters;
+};
+
+// All rows, in the order of the enum.
+const std::vector<TechniqueRow>& techniqueTable();
+const TechniqueRow& techniqueRow(Technique);
+// Throws std::invalid_argument listing the names if `name` is not a row.
+Technique techniqueFromName(const std::string& name);
+std::vector<std::string> techniqueNames();
+
+// The value of a parameter of the effect's technique: the scene's, else the row's default.
+// Throws std::invalid_argument for a name the row does not have.
+double techniqueParameter(const ShadowEffect& fx, const std::string& name);
+// Every parameter of the row with its value, in the row's order.
+std::vector<std::pair<std::string, double>> resolvedParameters(const ShadowEffect& fx);
+
+// The shadow map of one light under this effect.
+struct MapLayout {
+    unsigned glFormat = 0;      // GL internal format of one layer (GL_R32F, GL_RGBA16, ...)
+    std::string formatName;     // "R32F", "RG32F", "RGBA32F", "RGBA16"
+    int channels = 0;           // per layer
+    int layers = 0;             // textures (CSM: ceil(M / 2); others 1)
+    int bytesPerTexel = 0;      // per layer
+    unsigned satFormat = 0;     // float32 format with the same channel count (the SAT's)
+    std::string satFormatName;
+};
+MapLayout mapLayout(const ShadowEffect& fx);
+
+// What the shadow pass clears each layer to: the store of relative depth 1 ("nothing in
+// front"), mirroring shaders/techniques/store.frag (msm4: (1, 1, 1, 1)).
+std::vector<glm::vec4> shadowClearValues(const ShadowEffect& fx);
+// msm4-16bit: Peters et al.'s optimised quantisation, b -> q = Θ b + (0.0359558848, 0, 0, 0),
+// and its inverse; the CPU mirror of shaders/techniques/msm4_16bit.glsl.
+glm::dvec4 quantizeMoments16(const glm::dvec4& b);
+glm::dvec4 dequantizeMoments16(const glm::dvec4& q);
+// evsm: the warp exponents as the shaders clamp them (e^{2c} stays finite in float32).
+double clampedWarpExponent(double c);
+
+// The permutation defines of the shadow, filter and lighting programs. For msm4 exactly
+// {"SL_TECHNIQUE_MSM4"} (+ "SL_FILTER_SAT"), as before the table, so its programs are unchanged.
+std::vector<std::string> techniqueDefines(const ShadowEffect& fx);
+
+// Scene loading: checks the technique against its filter and parameters, fills the row's
+// default filter when the scene names none (or one the row does not allow and `filterDeclared`
+// is false). `parameters` is shadow.parameters or null. Throws SceneError
+// "<file>: <pointer>: expected ..., found ...".
+void validateTechnique(ShadowEffect& fx, bool filterDeclared, const nlohmann::json* parameters,
+                       const std::string& file, const std::string& pointer);
+
+// Switches the effect to technique `t` (the `--technique` override): keeps the scene's filter
+// if the row allows it, else takes the row's default; `parameters` replace the scene's (they
+// are checked against the row). Throws std::invalid_argument with a clear message.
+void overrideTechnique(ShadowEffect& fx, Technique t,
+                       const std::vector<std::pair<std::string, double>>& parameters = {});
+// "vsm" or "vsm:bleedReduction=0.3:minVariance=1e-4" -> technique and parameters.
+std::pair<Technique, std::vector<std::pair<std::string, double>>> parseTechniqueSpec(
+    const std::string& spec);
+
+}  // namespace sl

@@ -1,0 +1,58 @@
+// techniques/store.frag: the shadow pass of the framework's techniques (msm4 runs the student's
+// shadow_moments.frag instead). Writes what the technique's row stores, per layer:
+//   SL_STORE_DEPTH           z                         (hard, pcf, pcss, second-depth: R32F)
+//   SL_STORE_VSM             (z, z²)                   (RG32F)
+//   SL_STORE_EVSM2 / EVSM4   exp-warped moments        (evsm2.glsl / evsm4.glsl)
+//   SL_STORE_CSM             (cos c_k z, sin c_k z)    (csm.glsl, SL_MAP_LAYERS RGBA32F)
+//   SL_STORE_MOMENTS4        (z, z², z³, z⁴)           (RGBA32F)
+//   SL_STORE_MOMENTS4_16BIT  Θ b + offset              (msm4_16bit.glsl, RGBA16)
+// The CPU mirror of the store at z = 1 is the clear value (technique.h shadowClearValues).
+// (Helpers are included unconditionally: includes are once per program, whatever the #if.)
+#define SL_PROBE  // the technique files' functions only: no samplers, no uniforms
+#include "techniques/common.glsl"
+#include "techniques/evsm_common.glsl"
+#include "techniques/csm.glsl"
+#include "techniques/msm4_16bit.glsl"
+#undef SL_PROBE
+uniform float uPositiveExponent;
+uniform float uNegativeExponent;
+
+in vec3 vWorldPosition;
+in vec3 vWorldNormal;
+
+uniform vec3 uLightEye;
+uniform vec3 uLightForward;
+uniform vec2 uDepthRange;
+
+layout(location = 0) out vec4 outLayers[SL_MAP_LAYERS];
+
+void main() {
+    float z = techniqueRelativeDepth(dot(vWorldPosition - uLightEye, uLightForward), uDepthRange);
+    float z2 = z * z;
+#if defined(SL_STORE_DEPTH)
+    outLayers[0] = vec4(z, 0.0, 0.0, 0.0);
+#elif defined(SL_STORE_VSM)
+    outLayers[0] = vec4(z, z2, 0.0, 0.0);
+#elif defined(SL_STORE_EVSM2) || defined(SL_STORE_EVSM4)
+    float cp = min(uPositiveExponent, 42.0);
+    float wp = evsmWarp(z, cp);
+#if defined(SL_STORE_EVSM4)
+    float cn = min(uNegativeExponent, 42.0);
+    float wn = -exp(-cn * (2.0 * z - 1.0));
+    outLayers[0] = vec4(wp, wp * wp, wn, wn * wn);
+#else
+    outLayers[0] = vec4(wp, wp * wp, 0.0, 0.0);
+#endif
+#elif defined(SL_STORE_CSM)
+    for (int l = 0; l < SL_MAP_LAYERS; ++l) {
+        float c1 = kPi * float(4 * l + 1), c2 = kPi * float(4 * l + 3);
+        bool second = 2 * l + 2 <= SL_CSM_TERMS;
+        outLayers[l] = vec4(cos(c1 * z), sin(c1 * z), second ? cos(c2 * z) : 0.0,
+                            second ? sin(c2 * z) : 0.0);
+    }
+#elif defined(SL_STORE_MOMENTS4)
+    outLayers[0] = vec4(z, z2, z2 * z, z2 * z2);
+#elif defined(SL_STORE_MOMENTS4_16BIT)
+    outLayers[0] = msmQuantize16(vec4(z, z2, z2 * z, z2 * z2));
+#endif
+}
