@@ -7,6 +7,7 @@
 #include "image_io.h"
 #include "pass_plan.h"
 #include "paths.h"
+#include "probe_check.h"
 #include "render_output.h"
 #include "renderer.h"
 #include "scene.h"
@@ -52,6 +53,24 @@ int runRender(const std::string& scenePath, const std::string& solution,
         writeRenderOutputs(scene, plan, result, {solution, context->info()}, out);
         if (explain) std::cout << explainPlan(scene, plan, &result.passMillis);
         for (const auto& note : result.stubNotes) std::cout << "note: " << note << "\n";
+        // The scene's probes (docs/scenes.md): the reference must meet them (a wrong probe is a
+        // scene error, after the images are written); any other solution just hears about it.
+        if (spec.empty() && !scene.probes.empty()) {
+            const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
+                auto it = result.images.find(name);
+                return it == result.images.end() ? nullptr : &it->second;
+            });
+            if (!failures.empty() && solution == "reference") {
+                std::string all;
+                for (const auto& f : failures) all += "\n" + f;
+                throw SceneError("the reference render (written to " + out.string() +
+                                 ") does not match " + std::to_string(failures.size()) +
+                                 " probe(s):" + all);
+            }
+            for (const auto& f : failures) std::cout << "note: probe: " << f << "\n";
+            if (failures.empty())
+                std::cout << "probes: all " << scene.probes.size() << " hold\n";
+        }
         std::cout << "wrote " << out.string() << "/{final,shadow,moments_raw,moments_filtered}.{exr,png} "
                   << "and render.json (" << toString(scene.shadow.technique) << ", "
                   << context->info().backend << ", " << context->info().renderer << ")\n";
