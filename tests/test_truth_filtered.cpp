@@ -8,6 +8,7 @@
 #include "gpu_resources.h"
 #include "study_report.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,6 +106,42 @@ TEST(FilteredTruth, BoxOfOneTexelIsTheTexelsOwnComparison) {
     EXPECT_DOUBLE_EQ(filteredShadow(depth, {1.5 / 4, 1.5 / 4}, 0.3, k), 0.0);
     // Half a texel each of (1, 1) and (2, 1): half shadowed.
     EXPECT_DOUBLE_EQ(filteredShadow(depth, {2.0 / 4, 1.5 / 4}, 0.3, k), 0.5);
+}
+
+TEST(FilteredTruth, ReceiverPlaneRemovesSelfShadowingOfAFlatReceiver) {
+    // A directional light looking straight down at the plane y = 0 tilted by 30°: the map holds
+    // the tilted plane's own depths. A point on the plane, filtered with a wide kernel: against
+    // its one depth, half the kernel is nearer (acne); against its plane, nothing is.
+    const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 10, 0), glm::dvec3(0, 0, 0), glm::dvec3(0, 0, -1));
+    const glm::dmat4 proj = glm::ortho(-5.0, 5.0, -5.0, 5.0, 1.0, 20.0);
+    const glm::dmat4 vp = proj * view;
+    const glm::dvec3 n = glm::normalize(glm::dvec3(std::sin(0.5236), std::cos(0.5236), 0.0));
+    const int size = 64;
+    Image depth(size, size, 1);
+    ReceiverPlane plane;
+    plane.inverseViewProjection = glm::inverse(vp);
+    plane.point = {0, 0, 0};
+    plane.normal = n;
+    plane.eye = {0, 10, 0};
+    plane.forward = {0, -1, 0};
+    plane.range = {1.0, 20.0};
+    for (int y = 0; y < size; ++y)  // each texel: the plane's depth at its centre, as rasterised
+        for (int x = 0; x < size; ++x)
+            depth.at(x, y, 0) = float(plane.depthAt({(x + 0.5) / size, (y + 0.5) / size}));
+    FilterKernel k;
+    k.kind = FilterKind::Gaussian;
+    k.radius = 4;
+    const glm::dvec2 uv(0.5 + 0.13 / size, 0.5 - 0.21 / size);
+    const double zf = plane.depthAt(uv);
+    plane.depthBias = 1e-6;  // float storage of the map's depths
+    EXPECT_GT(filteredShadow(depth, uv, zf - 1e-6, k), 0.3) << "the constant depth should acne";
+    EXPECT_EQ(filteredShadow(depth, uv, zf - 1e-6, k, &plane), 0.0);
+    // An occluder over part of the kernel is still seen through the plane comparison.
+    for (int y = 0; y < size; ++y)
+        for (int x = size / 2; x < size; ++x) depth.at(x, y, 0) = 0.01f;
+    const double g = filteredShadow(depth, uv, zf - 1e-6, k, &plane);
+    EXPECT_GT(g, 0.3);
+    EXPECT_LT(g, 0.7);
 }
 
 TEST(ErrorMetrics, HandComputedCase) {

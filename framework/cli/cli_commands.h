@@ -19,6 +19,7 @@ struct Context {
 void addRenderCommands(CLI::App& app, Context& ctx);  // render, bench, info
 void addViewCommand(CLI::App& app, Context& ctx);    // view (cli_view.cpp, GLFW window)
 void addProbeCommand(CLI::App& app, Context& ctx);    // probe (cli_probe.cpp)
+void addStudyCommands(CLI::App& app, Context& ctx);   // study, truth (cli_study.cpp)
 void addProjectCommand(CLI::App& app, Context& ctx);  // project (cli_project.cpp)
 void addGraderCommands(CLI::App& app, Context& ctx);  // grade, golden, package (grader/)
 

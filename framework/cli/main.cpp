@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     sl::cli::addRenderCommands(app, ctx);
     sl::cli::addViewCommand(app, ctx);
     sl::cli::addProbeCommand(app, ctx);
+    sl::cli::addStudyCommands(app, ctx);
     sl::cli::addProjectCommand(app, ctx);
     sl::cli::addGraderCommands(app, ctx);
     try {

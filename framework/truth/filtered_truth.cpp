@@ -51,20 +51,38 @@ std::vector<double> gaussOf(const FilterKernel& k) {
 }
 
 double filtered(const Image& depth, glm::dvec2 uv, double zf, const FilterKernel& k,
-                const std::vector<double>& gauss) {
+                const std::vector<double>& gauss, const ReceiverPlane* plane) {
     const auto tx = axisTaps(uv.x * depth.width, depth.width, k, gauss);
     const auto ty = axisTaps(uv.y * depth.height, depth.height, k, gauss);
     double g = 0.0;
     for (const Tap& b : ty) {
         double row = 0.0;
-        for (const Tap& a : tx)
-            if (double(depth.at(a.index, b.index, 0)) < zf) row += a.weight;
+        for (const Tap& a : tx) {
+            const double z = plane ? plane->depthAt({(a.index + 0.5) / depth.width,
+                                                     (b.index + 0.5) / depth.height})
+                                   : zf;
+            if (double(depth.at(a.index, b.index, 0)) < z) row += a.weight;
+        }
         g += b.weight * row;
     }
     return g;
 }
 
 }  // namespace
+
+double ReceiverPlane::depthAt(glm::dvec2 uv) const {
+    // The light ray through uv: the points of NDC depth -1 and 1 (works for a perspective and
+    // an orthographic light alike), met with the plane.
+    const glm::dvec2 ndc = uv * 2.0 - 1.0;
+    const glm::dvec4 a4 = inverseViewProjection * glm::dvec4(ndc, -1.0, 1.0);
+    const glm::dvec4 b4 = inverseViewProjection * glm::dvec4(ndc, 1.0, 1.0);
+    const glm::dvec3 a = glm::dvec3(a4) / a4.w, d = glm::dvec3(b4) / b4.w - a;
+    const double denom = glm::dot(normal, d);
+    if (std::abs(denom) < 1e-12 * glm::length(d)) return fallback;
+    const glm::dvec3 x = a + (glm::dot(normal, point - a) / denom) * d;
+    const double lightDepth = glm::dot(x - eye, forward);
+    return std::clamp((lightDepth - range.x) / (range.y - range.x), 0.0, 1.0) - depthBias;
+}
 
 FilterKernel kernelOf(const ShadowEffect& fx) {
     FilterKernel k;
@@ -75,8 +93,9 @@ FilterKernel kernelOf(const ShadowEffect& fx) {
     return k;
 }
 
-double filteredShadow(const Image& depth, glm::dvec2 uv, double zf, const FilterKernel& kernel) {
-    return filtered(depth, uv, zf, kernel, gaussOf(kernel));
+double filteredShadow(const Image& depth, glm::dvec2 uv, double zf, const FilterKernel& kernel,
+                      const ReceiverPlane* plane) {
+    return filtered(depth, uv, zf, kernel, gaussOf(kernel), plane);
 }
 
 Image filteredTruth(const Scene& scene, const VisiblePoints& points, const Image& reached,
@@ -85,6 +104,7 @@ Image filteredTruth(const Scene& scene, const VisiblePoints& points, const Image
     for (const Object& o : scene.objects) bounds.push_back(worldBounds(buildMesh(o, scene), objectToWorld(o)));
     const LightView view = computeLightView(scene.lights.at(size_t(lightIndex)), scene.shadow, bounds);
     const glm::dmat4 vp(view.viewProjection);
+    const glm::dmat4 inverseVp = glm::inverse(vp);
     const glm::dvec3 eye(view.eye), forward(view.forward);
     const glm::dvec2 range(view.depthRange);
     const std::vector<double> gauss = gaussOf(kernel);
@@ -100,7 +120,18 @@ Image filteredTruth(const Scene& scene, const VisiblePoints& points, const Image
             const double lightDepth = glm::dot(p - eye, forward);
             const double zf = std::clamp((lightDepth - range.x) / (range.y - range.x), 0.0, 1.0) -
                               double(scene.shadow.depthBias);
-            g.at(x, y, 0) = float(filtered(depth, glm::dvec2(ndc) * 0.5 + 0.5, zf, kernel, gauss));
+            ReceiverPlane plane;
+            plane.inverseViewProjection = inverseVp;
+            plane.point = p;
+            plane.normal = glm::dvec3(points.geometricNormal.at(x, y, 0),
+                                      points.geometricNormal.at(x, y, 1),
+                                      points.geometricNormal.at(x, y, 2));
+            plane.eye = eye, plane.forward = forward, plane.range = range;
+            plane.depthBias = scene.shadow.depthBias;
+            plane.fallback = zf;
+            const bool flat = glm::dot(plane.normal, plane.normal) > 0.5;
+            g.at(x, y, 0) = float(filtered(depth, glm::dvec2(ndc) * 0.5 + 0.5, zf, kernel, gauss,
+                                           flat ? &plane : nullptr));
         }
     return g;
 }

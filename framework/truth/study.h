@@ -1,0 +1,53 @@
+// study: the accuracy-versus-cost sweep (`shadowlab study`, docs/accuracy.md). Every
+// combination of technique × shadow-map size × filter × radius is rendered through the real
+// pipeline, timed as --explain times it, and compared with the ray-traced truth and with the
+// exact filtered visibility; one CSV row each (study_table.h), then the plots and the page
+// (study_report.h). Work is shared: the truth once per scene (and cached on disk), one depth
+// map per (scene, light, size) for the filtered truths, each filtered truth once per kernel.
+#pragma once
+
+#include "study_table.h"
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace sl {
+
+namespace fs = std::filesystem;
+
+struct StudyOptions {
+    fs::path scene;
+    std::vector<std::string> techniques;  // specs, "msm4" or "vsm:bleedReduction=0.3"
+    std::vector<int> mapSizes = {256, 512, 1024, 2048};
+    std::vector<int> radii = {1, 2, 4, 8, 16};      // Gaussian r; SAT box 2r + 1 texels
+    std::vector<std::string> filters = {"gaussian", "sat"};
+    int repeats = 3;
+    std::string solution = "reference";
+    int imageSize = 0;     // > 0: the main camera renders imageSize² (keeping nothing else)
+    int samples = 1024;    // shadow rays per pixel for area lights
+    fs::path out;
+    fs::path cacheDir;     // the truth cache; empty: none
+    bool explain = false;  // print each row's plan with its median times
+    bool progress = true;  // a progress bar on stderr
+    bool report = true;    // draw the plots and index.html at the end
+    std::string headline;  // machine, Mesa and LLVM versions, for the page
+};
+
+struct StudySummary {
+    int planned = 0, run = 0, skipped = 0;  // skipped: already in the CSV (resumed)
+    bool truthFromCache = false;
+    double truthSeconds = 0.0, maxStdError = 0.0;
+    int samplesPerPixel = 1;
+    std::vector<std::string> notes;  // what was reused, rows the technique table refused
+};
+
+// Every technique's default spec: the names of the technique table, in its order.
+std::vector<std::string> allTechniqueSpecs();
+
+// Needs a current GL context. Writes DIR/study.csv (appending; rows already there are skipped),
+// DIR/rows/*.png, DIR/truth/*.png and, with `report`, the plots and index.html.
+StudySummary runStudy(const StudyOptions& options, std::ostream& log);
+
+}  // namespace sl

@@ -1,0 +1,149 @@
+// The study: a tiny sweep (two techniques, two map sizes, 128² image) through the real
+// pipeline: a CSV row per combination and no NaN, resumption, an error measure that can fail
+// (a 128² map is worse than a 2048² one), and the page opened in headless Chromium.
+#include "gl_test_support.h"
+#include "study.h"
+#include "study_table.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace sl {
+namespace {
+
+class Study : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        test::sharedContext();
+        dir_ = new fs::path(test::tempDir("study_tiny"));
+        StudyOptions o = tinyOptions();
+        std::ostringstream log;
+        summary_ = new StudySummary(runStudy(o, log));
+    }
+    static void TearDownTestSuite() {
+        delete dir_;
+        delete summary_;
+    }
+    static StudyOptions tinyOptions() {
+        StudyOptions o;
+        o.scene = test::scenePath("classic");
+        o.techniques = {"msm4", "vsm"};
+        o.mapSizes = {128, 2048};
+        o.radii = {2};
+        o.filters = {"gaussian"};
+        o.repeats = 1;
+        o.imageSize = 128;
+        o.out = *dir_;
+        o.progress = false;
+        return o;
+    }
+    static fs::path* dir_;
+    static StudySummary* summary_;
+};
+fs::path* Study::dir_ = nullptr;
+StudySummary* Study::summary_ = nullptr;
+
+TEST_F(Study, OneRowPerCombinationAndNoNaN) {
+    EXPECT_EQ(summary_->planned, 4);
+    EXPECT_EQ(summary_->run, 4);
+    const auto rows = readStudyCsv(*dir_ / "study.csv");
+    ASSERT_EQ(rows.size(), 4u);
+    std::set<std::string> keys;
+    for (const StudyRow& r : rows) {
+        keys.insert(r.key());
+        for (double v : {r.frameMedian, r.frameRatio, r.copyMillis, r.truth.rmse, r.truth.max,
+                         r.truth.p99, r.filtered.rmse, r.filtered.max})
+            EXPECT_TRUE(std::isfinite(v)) << r.key();
+        EXPECT_GT(r.frameRatio, 0.0) << r.key();
+        EXPECT_GT(r.truth.pixels, 1000u) << r.key();
+        EXPECT_GT(r.mapBytes, 0u);
+        EXPECT_TRUE(fs::exists(*dir_ / r.errorMap)) << r.errorMap;
+        EXPECT_TRUE(fs::exists(*dir_ / r.image)) << r.image;
+    }
+    EXPECT_EQ(keys.size(), 4u) << "duplicate combinations";
+    // The raw text has no NaN anywhere either (a NaN would also fail to parse back as a number).
+    std::ifstream in(*dir_ / "study.csv");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("nan"), std::string::npos);
+    // Map bytes follow the format: msm4 stores 4 floats a texel, vsm 2.
+    for (const StudyRow& r : rows)
+        EXPECT_EQ(r.mapBytes, size_t(r.mapSize) * r.mapSize * (r.technique == "msm4" ? 16u : 8u)) << r.key();
+}
+
+TEST_F(Study, A128MapIsMeasurablyWorseThanA2048Map) {
+    const auto rows = readStudyCsv(*dir_ / "study.csv");
+    for (const std::string tech : {"msm4", "vsm"}) {
+        const StudyRow *small = nullptr, *large = nullptr;
+        for (const StudyRow& r : rows)
+            if (r.technique == tech) (r.mapSize == 128 ? small : large) = &r;
+        ASSERT_TRUE(small && large) << tech;
+        EXPECT_GT(small->truth.rmse, 1.3 * large->truth.rmse) << tech;
+        EXPECT_GT(small->truth.p99, large->truth.p99) << tech;
+    }
+}
+
+TEST_F(Study, ResumesAndRedoesOnlyMissingRows) {
+    const fs::path copy = test::tempDir("study_resume");
+    fs::copy(*dir_ / "study.csv", copy / "study.csv");
+    {   // Drop the last row and cut the one before short, as an interrupted sweep would.
+        std::ifstream in(copy / "study.csv");
+        std::vector<std::string> lines;
+        for (std::string l; std::getline(in, l);) lines.push_back(l);
+        ASSERT_EQ(lines.size(), 5u);
+        std::ofstream out(copy / "study.csv", std::ios::trunc);
+        for (size_t i = 0; i < 3; ++i) out << lines[i] << "\n";
+        out << lines[3].substr(0, lines[3].size() / 2);  // no newline: cut mid-write
+    }
+    StudyOptions o = tinyOptions();
+    o.out = copy;
+    o.report = false;
+    std::ostringstream log;
+    const StudySummary s = runStudy(o, log);
+    EXPECT_EQ(s.skipped, 2);
+    EXPECT_EQ(s.run, 2);
+    const auto rows = readStudyCsv(copy / "study.csv");
+    EXPECT_EQ(rows.size(), 4u);
+}
+
+TEST_F(Study, SaysWhatItReused) {
+    const auto rows = readStudyCsv(*dir_ / "study.csv");
+    ASSERT_EQ(rows.size(), 4u);
+    // Rows in order msm4 128, msm4 2048, vsm 128, vsm 2048: vsm shares msm4's depth maps and
+    // filtered truths (same size, same kernel).
+    EXPECT_NE(rows[0].reused.find("depth map 128² rendered"), std::string::npos) << rows[0].reused;
+    EXPECT_NE(rows[2].reused.find("depth map 128² shared"), std::string::npos) << rows[2].reused;
+    EXPECT_NE(rows[2].reused.find("filtered truth shared"), std::string::npos) << rows[2].reused;
+}
+
+TEST_F(Study, PlotsAndPageOpenInHeadlessChromium) {
+    for (const char* f : {"pareto.svg", "pareto.png", "pareto_bytes.svg", "pareto_bytes.png", "index.html"})
+        EXPECT_TRUE(fs::exists(*dir_ / f)) << f;
+    std::ifstream svg(*dir_ / "pareto.svg");
+    std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("Pareto front"), std::string::npos);
+    EXPECT_NE(text.find("msm4"), std::string::npos);
+    if (test::runCommand("command -v chromium").exitCode != 0)
+        GTEST_SKIP() << "chromium is not installed (apt-get install chromium): page not opened";
+    const fs::path shot = test::tempDir("study_shot") / "shot.png";
+    const fs::path profile = test::tempDir("study_profile");
+    auto r = test::runCommand(
+        "timeout 60 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+        "--disable-background-networking --disable-component-update --disable-sync "
+        "--user-data-dir=" + profile.string() + " --window-size=1200,1600 --screenshot=" +
+        shot.string() + " file://" + fs::absolute(*dir_ / "index.html").string());
+    ASSERT_TRUE(fs::exists(shot)) << r.output;
+    OIIO::ImageBuf img(shot.string());
+    ASSERT_TRUE(img.read()) << img.geterror();
+    auto stats = OIIO::ImageBufAlgo::computePixelStats(img);
+    double spread = 0;
+    for (size_t c = 0; c < 3 && c < stats.stddev.size(); ++c) spread += stats.stddev[c];
+    EXPECT_GT(spread, 0.05) << "the screenshot is (nearly) one colour: a blank page";
+}
+
+}  // namespace
+}  // namespace sl
