@@ -131,3 +131,22 @@ TEST(InstructorProbes, GradeStopsOnAHiddenSceneWhoseProbeTheReferenceContradicts
 }
 
 }  // namespace sl
+
+namespace sl {
+
+TEST(InstructorProbes, RenderChecksTheProbesOfTheReference) {
+    const fs::path dir = test::tempDir("instructor_wrong_probe_render");
+    auto ok = test::runCommand(test::shadowlabBinary() + " render --scene " +
+                               test::scenePath("classic").string() + " --out " + (dir / "ok").string());
+    ASSERT_EQ(ok.exitCode, 0) << ok.output;
+    EXPECT_NE(ok.output.find("probes: all 4 hold"), std::string::npos) << ok.output;
+    const fs::path scene = wrongProbeScene(dir / "private");
+    auto bad = test::runCommand(test::shadowlabBinary() + " render --scene " + scene.string() +
+                                " --out " + (dir / "bad").string());
+    EXPECT_EQ(bad.exitCode, 2) << bad.output;
+    EXPECT_NE(bad.output.find(scene.string() + ": /expect/probes/0: expected G = 0"), std::string::npos)
+        << bad.output;
+    EXPECT_TRUE(fs::exists(dir / "bad" / "shadow.exr"));  // written, to look at
+}
+
+}  // namespace sl
