@@ -105,7 +105,7 @@ std::vector<int> intList(const std::string& s, const std::string& option) {
 
 void addStudyCommands(CLI::App& app, Context& ctx) {
     auto* truth = app.add_subcommand("truth", "render a scene and its ground truths (Embree)");
-    struct TruthArgs { std::string scene, out = "out", cache; int samples = 1024; };
+    struct TruthArgs { std::string scene, out = "out", cache; int samples = 1296; };
     auto t = std::make_shared<TruthArgs>();
     truth->add_option("--scene", t->scene, "scene JSON file")->required();
     truth->add_option("--out", t->out, "output folder (the render and the truths)");
@@ -118,7 +118,7 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     struct StudyArgs {
         std::string scene, techniques, sizes = "256,512,1024,2048", radii = "1,2,4,8,16",
                     filters = "gaussian,sat", solution = "reference", out, cache;
-        int repeats = 3, samples = 1024, image = 0;
+        int repeats = 3, samples = 1296, image = 0;
         bool explain = false, noProgress = false;
     };
     auto s = std::make_shared<StudyArgs>();

@@ -21,7 +21,7 @@ namespace sl {
 class RayScene;
 
 struct RayTruthOptions {
-    int samples = 1024;  // area lights: rounded to an even square m² (1024 = 32²), m >= 2
+    int samples = 1296;  // area lights: rounded to an even square m² (1296 = 36²), m >= 2
     int threads = 0;     // 0: std::thread::hardware_concurrency()
 };
 

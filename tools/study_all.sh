@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# study_all.sh: the study of docs/accuracy.md, regenerated (`./kit study`). Runs
+# `shadowlab study` on every public scene with a shadowing light and on the ladder's
+# light-bleeding and contact-hardening scenes, into out/study/<scene>/, then copies each
+# scene's table, plots and page (with the images the page shows) into docs/accuracy/<scene>/.
+#   tools/study_all.sh SHADOWLAB [--quick] [extra shadowlab study options...]
+# --quick: two map sizes and two radii, for a fast look (not what the docs show).
+set -euo pipefail
+BIN="$1"; shift
+ROOT="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
+OUT="${SHADOWLAB_STUDY_OUT:-$ROOT/out/study}"
+DOCS="$ROOT/docs/accuracy"
+# The documented sweep: every technique of the table, 256²..2048² maps, Gaussian radius 1 and 4
+# (the SAT box 3 and 9 texels), both filters, 3 timed frames, a 256² image.
+SWEEP=(--map-sizes 256,512,1024,2048 --radii 1,4 --filters gaussian,sat --repeats 3 --image 256)
+if [ "${1:-}" = --quick ]; then
+  shift
+  SWEEP=(--map-sizes 256,1024 --radii 2,8 --filters gaussian,sat --repeats 2 --image 128)
+fi
+SCENES=()
+for s in "$ROOT"/scenes/*.json "$ROOT"/scenes/ladder/light_bleeding.json "$ROOT"/scenes/ladder/contact_hardening.json; do
+  [ -f "$s" ] || continue
+  grep -q '"lights"' "$s" || continue
+  [ "$(basename "$s")" = unlit_no_shadow.json ] && continue  # no light casts shadows
+  SCENES+=("$s")
+done
+mkdir -p "$DOCS"
+"$BIN" info > "$DOCS/machine.txt"
+grep -m1 'model name' /proc/cpuinfo | sed 's/^model name\s*: /cpu:      /' >> "$DOCS/machine.txt"
+echo "threads:  $(nproc)" >> "$DOCS/machine.txt"
+for scene in "${SCENES[@]}"; do
+  name="$(basename "$scene" .json)"
+  echo "== $name"
+  "$BIN" study --scene "$scene" --out "$OUT/$name" "${SWEEP[@]}" "$@"
+  dest="$DOCS/$name"
+  rm -rf "$dest"; mkdir -p "$dest/plots"
+  cp "$OUT/$name"/{study.csv,pareto.svg,pareto.png,pareto_bytes.svg,pareto_bytes.png,index.html} "$dest/"
+  # The images the page shows (one row per technique, the truth), nothing else.
+  grep -o 'src="[^"]*\.png"' "$OUT/$name/index.html" | sed 's/^src="//; s/"$//' | sort -u |
+    while read -r img; do mkdir -p "$dest/$(dirname "$img")"; cp "$OUT/$name/$img" "$dest/$img"; done
+done
+echo "docs/accuracy/: ${#SCENES[@]} scenes; see docs/accuracy.md"
