@@ -19,27 +19,37 @@ uniform float uMomentBias;  // α, handed to msm.glsl
 // even inside a branch the preprocessor drops, so a nested include would come too late.
 #include "techniques/evsm_common.glsl"
 #include "techniques/msm_hamburger.glsl"
-#if defined(SL_TECHNIQUE_HARD)
+#ifdef SL_TECHNIQUE_HARD
 #include "techniques/hard.glsl"
-#elif defined(SL_TECHNIQUE_SECOND_DEPTH)
+#endif
+#ifdef SL_TECHNIQUE_SECOND_DEPTH
 #include "techniques/second_depth.glsl"
-#elif defined(SL_TECHNIQUE_PCF)
+#endif
+#ifdef SL_TECHNIQUE_PCF
 #include "techniques/pcf.glsl"
-#elif defined(SL_TECHNIQUE_PCSS)
+#endif
+#ifdef SL_TECHNIQUE_PCSS
 #include "techniques/pcss.glsl"
-#elif defined(SL_TECHNIQUE_VSM)
+#endif
+#ifdef SL_TECHNIQUE_VSM
 #include "techniques/vsm.glsl"
-#elif defined(SL_TECHNIQUE_EVSM2)
+#endif
+#ifdef SL_TECHNIQUE_EVSM2
 #include "techniques/evsm2.glsl"
-#elif defined(SL_TECHNIQUE_EVSM4)
+#endif
+#ifdef SL_TECHNIQUE_EVSM4
 #include "techniques/evsm4.glsl"
-#elif defined(SL_TECHNIQUE_CSM)
+#endif
+#ifdef SL_TECHNIQUE_CSM
 #include "techniques/csm.glsl"
-#elif defined(SL_TECHNIQUE_MSM4_HAUSDORFF)
+#endif
+#ifdef SL_TECHNIQUE_MSM4_HAUSDORFF
 #include "techniques/msm4_hausdorff.glsl"
-#elif defined(SL_TECHNIQUE_MSM4_16BIT)
+#endif
+#ifdef SL_TECHNIQUE_MSM4_16BIT
 #include "techniques/msm4_16bit.glsl"
-#elif defined(SL_TECHNIQUE_MSM_SOFT)
+#endif
+#ifdef SL_TECHNIQUE_MSM_SOFT
 #include "techniques/msm_soft.glsl"
 #endif
 #endif

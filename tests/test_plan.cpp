@@ -1,5 +1,6 @@
 // planPasses: only the passes the scene's effects call for, in order.
 #include "pass_plan.h"
+#include "technique.h"
 
 #include <gtest/gtest.h>
 
@@ -86,6 +87,123 @@ TEST(PassPlan, ExplainListsEveryPassWithItsTime) {
     EXPECT_NE(text.find("gaussian-x"), std::string::npos) << text;
     EXPECT_NE(text.find("2.25 ms"), std::string::npos) << text;
     EXPECT_NE(text.find("10.75 ms"), std::string::npos) << text;  // the total
+}
+
+}  // namespace sl
+
+// --- The technique ladder: what each row plans (expected values from the table in issue 8,
+// written out here, not read from the table under test). ---
+namespace sl {
+namespace {
+
+struct Expected {
+    Technique technique;
+    FilterKind filter;
+    std::vector<PassKind> passes;  // for one light, one camera
+    std::string rawFormat;
+    int rawLayers;
+    size_t rawBytesPerTexel;       // per layer
+    size_t totalBytesPerTexel;     // every shadow texture of the light, per map texel
+    int channels;
+};
+
+using K = PassKind;
+const std::vector<Expected> kLadder = {
+    {Technique::Hard, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 4 + 4, 1},
+    {Technique::SecondDepth, FilterKind::None, {K::Shadow, K::ShadowSecond, K::Lighting}, "R32F", 1,
+     4, 4 + 4 + 4, 1},
+    {Technique::Pcf, FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
+    {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
+    {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
+    // Gaussian: raw + scratch + filtered; the framework SAT: raw + hi + lo.
+    {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+     "RG32F", 1, 8, 4 + 3 * 8, 2},
+    {Technique::Vsm, FilterKind::Sat, {K::Shadow, K::SatRows, K::SatColumns, K::Lighting}, "RG32F",
+     1, 8, 4 + 3 * 8, 2},
+    {Technique::Vsm, FilterKind::None, {K::Shadow, K::Lighting}, "RG32F", 1, 8, 4 + 8, 2},
+    {Technique::Evsm2, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+     "RG32F", 1, 8, 4 + 24, 2},
+    {Technique::Evsm4, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+     "RGBA32F", 1, 16, 4 + 48, 4},
+    // CSM, M = 8 terms (the default): 16 channels in four RGBA32F maps, each filtered.
+    {Technique::Csm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+     "RGBA32F", 4, 16, 4 + 3 * 64, 16},
+    // msm4 = the student stages: SAT rows, columns, and the resolve for output.
+    {Technique::Msm4, FilterKind::Sat,
+     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
+     4 + 4 * 16, 4},
+    {Technique::Msm4, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+     "RGBA32F", 1, 16, 4 + 48, 4},
+    {Technique::Msm4Hausdorff, FilterKind::Gaussian,
+     {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA32F", 1, 16, 4 + 48, 4},
+    // 16 bits: half of msm4's map; the SAT of it is float32 again (sums exceed 1).
+    {Technique::Msm4_16bit, FilterKind::Gaussian,
+     {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA16", 1, 8, 4 + 24, 4},
+    {Technique::Msm4_16bit, FilterKind::Sat, {K::Shadow, K::SatRows, K::SatColumns, K::Lighting},
+     "RGBA16", 1, 8, 4 + 8 + 32, 4},
+    {Technique::MsmSoft, FilterKind::Sat, {K::Shadow, K::SatRows, K::SatColumns, K::Lighting},
+     "RGBA32F", 1, 16, 4 + 48, 4},
+};
+
+}  // namespace
+
+TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
+    for (const Expected& e : kLadder) {
+        Scene s = sceneWith(e.filter, 1, true);
+        s.shadow.technique = e.technique;
+        s.shadow.mapSize = 256;
+        const std::string what = std::string(toString(e.technique)) + "/" + toString(e.filter);
+        PassPlan plan = planPasses(s);
+        EXPECT_EQ(kinds(plan), e.passes) << what;
+        const PlannedTexture* raw = plan.texture(0, "raw");
+        ASSERT_NE(raw, nullptr) << what;
+        EXPECT_EQ(raw->format, e.rawFormat) << what;
+        EXPECT_EQ(raw->layers, e.rawLayers) << what;
+        EXPECT_EQ(raw->bytes, 256u * 256u * e.rawBytesPerTexel * e.rawLayers) << what;
+        EXPECT_EQ(plan.bytes(0), 256u * 256u * e.totalBytesPerTexel) << what;
+        EXPECT_EQ(plan.momentChannels, e.channels) << what;
+    }
+}
+
+TEST(PassPlan, Msm16bitHalvesTheMapOfMsm4) {
+    Scene s = sceneWith(FilterKind::Gaussian, 1, true);
+    s.shadow.technique = Technique::Msm4;
+    const size_t full = planPasses(s).texture(0, "raw")->bytes;
+    s.shadow.technique = Technique::Msm4_16bit;
+    EXPECT_EQ(planPasses(s).texture(0, "raw")->bytes * 2, full);
+}
+
+TEST(PassPlan, CsmTermsDecideTheLayers) {
+    Scene s = sceneWith(FilterKind::None, 1, true);
+    s.shadow.technique = Technique::Csm;
+    for (int m : {1, 2, 3, 8}) {
+        s.shadow.parameters["terms"] = m;
+        PassPlan plan = planPasses(s);
+        EXPECT_EQ(plan.texture(0, "raw")->layers, (m + 1) / 2) << m;
+        EXPECT_EQ(plan.momentChannels, 2 * m) << m;
+    }
+}
+
+TEST(PassPlan, AnUnlitSceneAllocatesAndDispatchesNothingForEveryTechnique) {
+    for (const Expected& e : kLadder) {
+        Scene s = sceneWith(e.filter, 2, false);
+        s.shadow.technique = e.technique;
+        PassPlan plan = planPasses(s);
+        EXPECT_EQ(kinds(plan), std::vector<PassKind>{PassKind::Lighting});
+        EXPECT_EQ(plan.bytes(), 0u);
+        EXPECT_EQ(plan.momentChannels, 0);
+    }
+}
+
+TEST(PassPlan, ExplainNamesFormatMemoryAndParameters) {
+    Scene s = sceneWith(FilterKind::Gaussian, 1, true);
+    s.shadow.technique = Technique::Vsm;
+    s.shadow.mapSize = 512;
+    std::string text = explainPlan(s, planPasses(s));
+    EXPECT_NE(text.find("technique vsm"), std::string::npos) << text;
+    EXPECT_NE(text.find("RG32F"), std::string::npos) << text;
+    EXPECT_NE(text.find("2.00 MiB"), std::string::npos) << text;  // 512² × 8 bytes
+    EXPECT_NE(text.find("bleedReduction=0.18"), std::string::npos) << text;
 }
 
 }  // namespace sl

@@ -1,6 +1,7 @@
 // cli_render: the subcommands that render and measure.
 //   render  renders one scene through a solution and writes its images and sidecar
 //   bench   (cli_bench.cpp) times the filter passes against a copy pass
+//   compare (cli_compare.cpp) the technique ladder side by side
 //   info    prints the GL backend, renderer and Mesa version
 #include "cli_commands.h"
 #include "gl_context.h"
@@ -19,9 +20,17 @@
 
 namespace sl::cli {
 
+void addCompareCommand(CLI::App& app, Context& ctx);  // compare (cli_compare.cpp)
+
 void addBenchCommand(CLI::App& app, Context& ctx);  // bench (cli_bench.cpp)
 
 namespace {
+
+// "vsm:bleedReduction=0.3" -> "vsm_bleedReduction-0.3": one folder per spec.
+std::string specFolder(std::string spec) {
+    for (char& c : spec) c = c == ':' ? '_' : c == '=' ? '-' : c;
+    return spec;
+}
 
 int runRender(const std::string& scenePath, const std::string& solution,
               const std::string& outDir, const std::string& backend, bool explain,
@@ -46,7 +55,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
         if (!spec.empty()) {
             auto [technique, parameters] = parseTechniqueSpec(spec);
             overrideTechnique(scene.shadow, technique, parameters);
-            if (specs.size() > 1) out /= toString(technique);
+            if (specs.size() > 1) out /= specFolder(spec);
         }
         PassPlan plan = planPasses(scene);
         RenderResult result = renderer.render(scene, plan);
@@ -102,6 +111,8 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
     });
 
     addBenchCommand(app, ctx);  // cli_bench.cpp
+
+    addCompareCommand(app, ctx);  // cli_compare.cpp
 
     auto* info = app.add_subcommand("info", "print the GL backend and renderer");
     info->callback([&ctx] {

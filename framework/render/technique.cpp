@@ -58,7 +58,8 @@ std::vector<TechniqueRow> makeTable() {
     const std::vector<TechniqueParameter> evsmCommon = {
         {"positiveExponent", 40.0, 0.0, 100.0, false, false,
          "c+ of exp(c+ z'), clamped to 42 (float32)"},
-        {"minVariance", 1e-4, 0.0, 0.1, false, false, "lower bound of σ², in warped depth units"},
+        {"minVariance", 1e-7, 0.0, 0.1, false, false,
+         "lower bound of σ², in depth units squared (scaled by the warp's slope)"},
         {"bleedReduction", 0.0, 0.0, 0.99, false, false, "as for vsm"}};
     t.push_back({Technique::Evsm2, "evsm2", "exponential VSM, positive warp", "(e^{c+z'}, e^{2c+z'})",
                  2, 32, any, false, false, false, false, "techniques/evsm2.glsl",
@@ -75,12 +76,12 @@ std::vector<TechniqueRow> makeTable() {
     t.push_back({Technique::Csm, "csm", "convolution shadow maps (Fourier series)",
                  "(cos c_k z, sin c_k z), k = 1..M", 4, 32, any, false, false, false, false,
                  "techniques/csm.glsl", "SL_TECHNIQUE_CSM", "SL_STORE_CSM",
-                 {{"terms", 4, 1, 8, true, true, "M, Fourier terms (2M channels, M/2 maps)"},
+                 {{"terms", 8, 1, 8, true, true, "M, Fourier terms (2M channels, M/2 maps)"},
                   {"damping", 1.0, 0.0, 20.0, false, false,
                    "α of the damping exp(-α (k/M)²) against ringing"},
-                  {"offset", 0.02, 0.0, 0.5, false, false,
+                  {"offset", 0.03, 0.0, 0.5, false, false,
                    "the test depth moves this far toward the light (self-shadowing)"},
-                  {"sharpen", 2.0, 1.0, 16.0, false, false,
+                  {"sharpen", 3.0, 1.0, 16.0, false, false,
                    "visibility v -> clamp(sharpen (v - 1/2) + 1/2)"}}});
     t.push_back({Technique::Msm4, "msm4", "Hamburger 4MSM (the student stages)",
                  "(z, z², z³, z⁴)", 4, 32, {F::Gaussian, F::Sat, F::None}, false, true, false,

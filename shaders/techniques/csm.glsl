@@ -10,7 +10,7 @@
 //   V = clamp(sharpen · (V − ½) + ½)  steepens the slow rise of the truncated step
 //   G = 1 − V
 #ifndef SL_PARAM_terms
-#define SL_PARAM_terms 4
+#define SL_PARAM_terms 4  // the probe's; the lighting pass defines the scene's M
 #endif
 #define SL_CSM_TERMS SL_PARAM_terms
 #define SL_CSM_LAYERS ((SL_CSM_TERMS + 1) / 2)

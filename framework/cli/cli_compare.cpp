@@ -1,0 +1,162 @@
+// cli_compare: `shadowlab compare` renders one scene with several techniques (the technique
+// ladder side by side) and writes one image folder per technique, a contact sheet PNG (the
+// final images in a grid, each labelled with its technique and its total pass time) and the
+// same sheet as an HTML page with every pass's format, memory and time.
+#include "cli_commands.h"
+#include "gl_context.h"
+#include "image_io.h"
+#include "pass_plan.h"
+#include "paths.h"
+#include "render_output.h"
+#include "renderer.h"
+#include "scene.h"
+#include "technique.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace sl::cli {
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+struct SheetEntry {
+    std::string name, summary;
+    double totalMs = 0.0;
+    std::string passRows;  // HTML rows
+};
+
+std::string htmlEscape(const std::string& s) {
+    std::string out;
+    for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+    return out;
+}
+
+// The contact sheet: final images in a grid of `columns`, a label band above each. Labels need
+// OIIO built with FreeType and the DejaVu font; without them the grid stays unlabelled (the
+// HTML sheet always names every image).
+void writeSheetPng(const fs::path& outDir, const std::vector<SheetEntry>& entries, int columns) {
+    std::vector<OIIO::ImageBuf> images;
+    int w = 0, h = 0;
+    for (const auto& e : entries) {
+        images.emplace_back((outDir / e.name / "final.png").string());
+        images.back().read(0, 0, true, OIIO::TypeDesc::UINT8);
+        w = std::max(w, images.back().spec().width);
+        h = std::max(h, images.back().spec().height);
+    }
+    const int band = 28, pad = 4;
+    const int rows = (int(entries.size()) + columns - 1) / columns;
+    OIIO::ImageSpec spec(columns * (w + pad) + pad, rows * (h + band + pad) + pad, 3,
+                         OIIO::TypeDesc::UINT8);
+    OIIO::ImageBuf sheet(spec);
+    const float bg[3] = {0.1f, 0.1f, 0.12f};
+    OIIO::ImageBufAlgo::fill(sheet, bg);
+    for (size_t i = 0; i < entries.size(); ++i) {
+        const int x = pad + int(i % columns) * (w + pad);
+        const int y = pad + int(i / columns) * (h + band + pad);
+        OIIO::ImageBufAlgo::paste(sheet, x, y + band, 0, 0, images[i]);
+        char label[128];
+        std::snprintf(label, sizeof label, "%s  %.0f ms", entries[i].name.c_str(), entries[i].totalMs);
+        const float white[3] = {1, 1, 1};
+        OIIO::ImageBufAlgo::render_text(sheet, x + 4, y + band - 8, label, 18, "DejaVuSans", white);
+    }
+    sheet.write((outDir / "sheet.png").string());
+}
+
+void writeSheetHtml(const fs::path& outDir, const Scene& scene,
+                    const std::vector<SheetEntry>& entries, const ContextInfo& info) {
+    std::ofstream html(outDir / "sheet.html");
+    html << "<!doctype html><meta charset=\"utf-8\"><title>" << htmlEscape(scene.name)
+         << ": technique ladder</title>\n<style>body{font-family:sans-serif;background:#1a1a1e;"
+            "color:#ddd} .grid{display:flex;flex-wrap:wrap;gap:12px} figure{margin:0;width:"
+            "min(100%,420px)} img{width:100%} table{font-size:12px;border-collapse:collapse}"
+            " td{padding:1px 6px}</style>\n<h1>"
+         << htmlEscape(scene.name) << ": the technique ladder</h1>\n<p>"
+         << htmlEscape(scene.description) << "</p>\n<p>" << htmlEscape(info.renderer) << ", "
+         << htmlEscape(info.version) << ". <a href=\"sheet.png\">contact sheet PNG</a></p>\n"
+         << "<div class=\"grid\">\n";
+    for (const auto& e : entries)
+        html << "<figure><img src=\"" << e.name << "/final.png\" alt=\"" << e.name
+             << "\"><figcaption><b>" << e.name << "</b> — " << htmlEscape(e.summary)
+             << " (total " << std::fixed << e.totalMs << " ms)<table>" << e.passRows
+             << "</table></figcaption></figure>\n";
+    html << "</div>\n";
+}
+
+int runCompare(const std::string& scenePath, const std::string& techniques,
+               const std::string& solution, const std::string& outDir, int columns,
+               const std::string& backend) {
+    const Scene loaded = loadScene(scenePath);
+    std::vector<std::string> specs;
+    if (techniques == "all") {
+        specs = techniqueNames();
+    } else {
+        for (size_t start = 0; start <= techniques.size();) {
+            size_t comma = techniques.find(',', start);
+            if (comma == std::string::npos) comma = techniques.size();
+            specs.push_back(techniques.substr(start, comma - start));
+            start = comma + 1;
+        }
+    }
+    auto context = createContext(parseBackendKind(backend));
+    Renderer renderer(ShaderLibrary::forSolution(resolveSolution(solution), repoRoot()));
+    std::vector<SheetEntry> entries;
+    for (const std::string& spec : specs) {
+        Scene scene = loaded;
+        auto [technique, parameters] = parseTechniqueSpec(spec);
+        overrideTechnique(scene.shadow, technique, parameters);
+        PassPlan plan = planPasses(scene);
+        RenderResult result = renderer.render(scene, plan);
+        std::string folder = spec;  // "vsm:bleedReduction=0.3" -> "vsm_bleedReduction-0.3"
+        for (char& c : folder) c = c == ':' ? '_' : c == '=' ? '-' : c;
+        SheetEntry e{folder, techniqueRow(technique).summary};
+        writeRenderOutputs(scene, plan, result, {solution, context->info()}, fs::path(outDir) / e.name);
+        for (size_t i = 0; i < plan.passes.size(); ++i) {
+            const PlannedPass& p = plan.passes[i];
+            const PlannedTexture* t = nullptr;
+            for (const auto& c : plan.textures)
+                if (c.role == p.writes && (p.light >= 0 ? c.light == p.light : c.camera == p.camera))
+                    t = &c;
+            char row[512];
+            std::snprintf(row, sizeof row,
+                          "<tr><td>%s</td><td>%s</td><td>%.2f MiB</td><td>%.1f ms</td></tr>",
+                          toString(p.kind), t ? t->format.c_str() : "", t ? t->bytes / 1048576.0 : 0.0,
+                          result.passMillis.at(i));
+            e.passRows += row;
+            e.totalMs += result.passMillis.at(i);
+        }
+        std::cout << explainPlan(scene, plan, &result.passMillis);
+        entries.push_back(std::move(e));
+    }
+    writeSheetPng(outDir, entries, std::max(1, std::min(columns, int(entries.size()))));
+    writeSheetHtml(outDir, loaded, entries, context->info());
+    std::cout << "wrote " << outDir << "/<technique>/, sheet.png and sheet.html (" << entries.size()
+              << " techniques)\n";
+    return Ok;
+}
+
+}  // namespace
+
+void addCompareCommand(CLI::App& app, Context& ctx) {
+    auto* compare = app.add_subcommand("compare", "render a scene with several techniques, side by side");
+    struct Args {
+        std::string scene, techniques = "all", solution = "reference", out = "out/compare";
+        int columns = 4;
+    };
+    auto a = std::make_shared<Args>();
+    compare->add_option("--scene", a->scene, "scene JSON file")->required();
+    compare->add_option("--techniques", a->techniques,
+                        "all, or T[,T2,...] (T may carry parameters: vsm:bleedReduction=0.3)");
+    compare->add_option("--solution", a->solution, "whose stages the msm4 row runs");
+    compare->add_option("--out", a->out, "output folder");
+    compare->add_option("--columns", a->columns, "images per row of the sheet")->check(CLI::Range(1, 16));
+    compare->callback([a, &ctx] {
+        ctx.exitCode = runCompare(a->scene, a->techniques, a->solution, a->out, a->columns, ctx.backend);
+    });
+}
+
+}  // namespace sl::cli
