@@ -1,10 +1,11 @@
 // package: copies the chosen parts of the repository into a scratch folder and archives it
 // with the system's tar or zip (an instructor's tool: it runs nothing from submissions).
-// What the student kit leaves out is the point of this file: reference/ (the solution),
-// tests/submissions/ (mutants and correct alternatives: solutions too), scenes/hidden/.
+// What the student kit leaves out and rewrites is student_kit.h; the Gradescope zip's two
+// scripts are here (docs/grading.md, "Packaging" and "Gradescope").
 #include "package.h"
 
 #include "paths.h"
+#include "student_kit.h"
 
 #include <unistd.h>
 
@@ -12,6 +13,8 @@
 #include <cstdlib>
 #include <vector>
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <stdexcept>
 
 namespace sl::grader {
@@ -20,51 +23,71 @@ namespace {
 namespace fs = std::filesystem;
 
 const char* kSetup = R"SH(#!/usr/bin/env bash
-# Gradescope setup: install the Debian packages and build (runs once, in the image).
+# Gradescope setup: install the autograder's Debian packages (./kit deps --grader: no Chromium,
+# Xvfb or GoogleTest) and build the shadowlab program; runs once, when the image is built.
+# Made for Debian 12 package names (docs/grading.md, "Gradescope"). $SHADOWLAB_AUTOGRADER
+# replaces /autograder (the kit's own test runs this script in a temporary folder).
 set -euo pipefail
-cd /autograder/source
-./kit deps
-cmake --preset default
+AG="${SHADOWLAB_AUTOGRADER:-/autograder}"
+cd "$AG/source"
+if [ -r /etc/os-release ]; then . /etc/os-release; echo "setup.sh on ${PRETTY_NAME:-?}"; fi
+./kit deps --grader
+version="$(cmake --version | sed -n '1s/.* //p')"
+if ! printf '3.25\n%s\n' "$version" | sort -V -C; then
+  echo "setup.sh: CMake $version is too old; the kit needs 3.25 (Debian 12, Ubuntu 24.04)." >&2
+  echo "On Gradescope pick a base image that has it (docs/grading.md, Gradescope)." >&2
+  exit 1
+fi
+cmake --preset default -DBUILD_TESTING=OFF >/dev/null
 cmake --build --preset default -j"$(nproc)" --target shadowlab
 )SH";
 
 const char* kRun = R"SH(#!/usr/bin/env bash
-# Gradescope run: grade /autograder/submission into /autograder/results/results.json.
-# Public scenes plus every scenes/hidden/*.json (after_due_date visibility).
-cd /autograder/source
-mkdir -p /autograder/results
+# Gradescope run: grade $AG/submission into $AG/results/results.json (AG: /autograder, or
+# $SHADOWLAB_AUTOGRADER). Public scenes plus every scenes/hidden/*.json (after_due_date).
+AG="${SHADOWLAB_AUTOGRADER:-/autograder}"
+cd "$AG/source"
+mkdir -p "$AG/results"
 scenes=public
 for f in scenes/hidden/*.json; do [ -e "$f" ] && scenes="$scenes,$PWD/$f"; done
-build/shadowlab grade --submission /autograder/submission --out /autograder/results \
+build/shadowlab grade --submission "$AG/submission" --out "$AG/results" \
   --reference live --scenes "$scenes" --no-report
 exit 0  # a low score is not a failed autograder: results.json says everything
 )SH";
 
 // The kit's own top-level entries (an allow-list: build/, out/, .git and the like stay out).
-bool excluded(const fs::path& rel, bool student) {
+bool excluded(const fs::path& rel, bool student, const std::set<std::string>& droppedTests) {
     static const std::vector<std::string> kit = {"CMakeLists.txt", "CMakePresets.json", "README.md",
                                                  "kit", "docs", "framework", "grader", "scenes",
                                                  "shaders", "student", "tests", "reference"};
     const std::string first = rel.begin()->string();
     if (std::find(kit.begin(), kit.end(), first) == kit.end()) return true;
-    if (!student) return false;
-    const std::string s = rel.generic_string();
-    return first == "reference" || s.rfind("tests/submissions", 0) == 0 ||
-           s.rfind("scenes/hidden", 0) == 0;
+    return student && leftOutOfStudentKit(rel.generic_string(), droppedTests);
 }
 
 void copyTree(const fs::path& root, const fs::path& dest, bool student) {
+    const std::set<std::string> droppedTests = student ? studentKitDroppedTests(root) : std::set<std::string>{};
     fs::create_directories(dest);
     for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
         const fs::path rel = fs::relative(it->path(), root);
-        if (excluded(rel, student)) {
+        if (excluded(rel, student, droppedTests)) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
         if (it->is_symlink()) continue;
-        if (it->is_directory()) fs::create_directories(dest / rel);
-        else if (it->is_regular_file()) fs::copy_file(it->path(), dest / rel);
+        if (it->is_directory()) {
+            fs::create_directories(dest / rel);
+        } else if (it->is_regular_file()) {
+            fs::copy_file(it->path(), dest / rel);
+            if (student && rel.extension() == ".md") {  // the student variant of each doc
+                std::ifstream in(it->path(), std::ios::binary);
+                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+                std::ofstream(dest / rel, std::ios::trunc | std::ios::binary) << studentMarkdown(text);
+            }
+        }
     }
+    if (student)  // the exact 4MSM's values for the catalogue, without the solver
+        std::ofstream(dest / "framework/numerics/msm_exact_table.cpp") << msmExactTableSource();
 }
 
 void run(const std::string& command) {

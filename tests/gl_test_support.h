@@ -63,6 +63,10 @@ inline CommandResult runCommand(const std::string& command) {
     return r;
 }
 
-inline std::string shadowlabBinary() { return SHADOWLAB_BINARY; }
+// build/shadowlab, next to this test binary's folder (build/tests/); found at run time so that
+// no path is compiled in (ccache shares the objects between copies of the kit).
+inline std::string shadowlabBinary() {
+    return (fs::read_symlink("/proc/self/exe").parent_path().parent_path() / "shadowlab").string();
+}
 
 }  // namespace sl::test

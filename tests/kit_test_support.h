@@ -1,0 +1,102 @@
+// kit_test_support: what the kit's own tests share — the command lines a Markdown file shows
+// (so that every new line in README/handout is tested without editing a test), running one
+// with a time limit in a folder, and the build folder this test binary belongs to.
+#pragma once
+
+#include "gl_test_support.h"
+
+#include <algorithm>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sl::test {
+
+// build/ (or build-<name>/): the folder holding this test binary's tests/ folder.
+inline fs::path buildDir() { return fs::read_symlink("/proc/self/exe").parent_path().parent_path(); }
+
+inline std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// The command lines a Markdown file shows: lines of ```sh code blocks and inline code spans
+// that start with `./kit ` or `build/shadowlab ` (a span's line breaks become spaces), with a
+// trailing `# comment` removed, in the order of the file.
+inline std::vector<std::string> documentedCommands(const std::string& markdown) {
+    std::vector<std::string> out;
+    auto keep = [&](std::string line) {
+        line = std::regex_replace(line, std::regex(R"(\s+#\s.*$)"), "");
+        line = std::regex_replace(line, std::regex(R"(\s+)"), " ");
+        line = std::regex_replace(line, std::regex(R"(^ | $)"), "");
+        if (line.rfind("./kit", 0) == 0 || line.rfind("build/shadowlab ", 0) == 0) out.push_back(line);
+    };
+    std::istringstream in(markdown);
+    std::string line, prose;
+    bool block = false;
+    auto flushProse = [&] {
+        static const std::regex span("`([^`]+)`");
+        for (std::sregex_iterator it(prose.begin(), prose.end(), span), end; it != end; ++it)
+            keep((*it)[1].str());
+        prose.clear();
+    };
+    while (std::getline(in, line)) {
+        if (line.rfind("```", 0) == 0) {
+            if (!block) flushProse();
+            block = !block;
+            continue;
+        }
+        if (block) keep(line);
+        else prose += line + "\n";
+    }
+    flushProse();
+    // A command shown twice (block and prose) runs once.
+    std::vector<std::string> unique;
+    for (const auto& c : out)
+        if (std::find(unique.begin(), unique.end(), c) == unique.end()) unique.push_back(c);
+    return unique;
+}
+
+// Runs `command` with bash in `dir`, killed after `seconds` (exit code 124 then).
+inline CommandResult runIn(const fs::path& dir, const std::string& command, int seconds,
+                           const std::string& env = "") {
+    std::string quoted = "'";
+    for (char c : command) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    quoted += "'";
+    return runCommand("cd '" + dir.string() + "' && " + env + " timeout -k 5 " +
+                      std::to_string(seconds) + " bash -c " + quoted + " </dev/null");
+}
+
+// How the kit's tests run a documented command line: as written, except
+//  - `./kit test` where `skipKitTest` (it is the command running this test),
+//  - benchmarks get `--size 64 --repeats 3` (a full-size benchmark is a minute of CPU),
+//  - `view` runs under xvfb-run (a virtual display), and a time limit closes its window.
+// Returns "" when it passed, else what went wrong (the command, its exit code, its output).
+inline std::string runDocumented(const fs::path& dir, std::string command, bool skipKitTest,
+                                 const std::string& env, std::string* skipped = nullptr) {
+    if (command == "./kit test" && skipKitTest) {
+        if (skipped) *skipped += command + ": skipped (it is the command running this test)\n";
+        return "";
+    }
+    const bool view = command.find("shadowlab view") != std::string::npos;
+    if (command.find(" bench") != std::string::npos && command.find("--size") == std::string::npos)
+        command += " --size 64 --repeats 3";
+    if (view) {
+        if (runCommand("command -v xvfb-run").exitCode != 0) {
+            if (skipped) *skipped += command + ": skipped (no xvfb-run; ./kit installs xvfb)\n";
+            return "";
+        }
+        command = "xvfb-run -a " + command;
+    }
+    CommandResult r = runIn(dir, command, view ? 25 : 900, env);
+    const bool ok = r.exitCode == 0 ||
+                    (view && r.exitCode == 124 && r.output.find("viewer:") != std::string::npos);
+    if (ok) return "";
+    return command + "\n  exit " + std::to_string(r.exitCode) + "\n" + r.output + "\n";
+}
+
+}  // namespace sl::test

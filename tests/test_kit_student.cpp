@@ -1,0 +1,109 @@
+// The student kit as a student gets it (issue 7 §3, §6): `shadowlab package --kind student`,
+// unpacked into its `shadowlab/` folder, holds no solution-bearing file, builds, and runs every
+// command line its own README and handout show. Slow (a build of the kit; ccache makes the
+// compiles hits when this build used it): see docs/grading.md for the measured time.
+#include "kit_test_support.h"
+
+#include <chrono>
+
+namespace sl {
+namespace {
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+}
+
+// What no student may get: a solution, its mirrors, the exact solver, the mutants and correct
+// alternatives, hidden scenes and their goldens. Returns the offending entries.
+std::vector<std::string> solutionBearing(const std::vector<std::string>& entries) {
+    static const std::regex bad(
+        R"(^shadowlab/(reference/|tests/oracles/|tests/submissions/|scenes/hidden/|framework/numerics/msm_exact\.cpp|docs/catalogue\.md)|(^|/)goldens/.*hidden)");
+    std::vector<std::string> out;
+    for (const auto& e : entries)
+        if (std::regex_search(e, bad)) out.push_back(e);
+    return out;
+}
+
+}  // namespace
+
+TEST(KitStudent, SolutionBearingPathsAreRecognised) {
+    // The check below must catch each of these (and pass the kit's own files).
+    auto found = solutionBearing({"shadowlab/reference/msm.glsl", "shadowlab/tests/oracles/x.h",
+                                  "shadowlab/tests/submissions/mutants/a/msm.glsl",
+                                  "shadowlab/framework/numerics/msm_exact.cpp",
+                                  "shadowlab/scenes/hidden/goldens/shelf/final.exr",
+                                  "shadowlab/student/msm.glsl", "shadowlab/framework/numerics/msm_exact.h"});
+    EXPECT_EQ(found.size(), 5u) << testing::PrintToString(found);
+}
+
+TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
+    using Clock = std::chrono::steady_clock;
+    const fs::path dir = test::tempDir("student_kit");
+    const fs::path tarball = dir / "shadowlab-student.tar.gz";
+    auto pack = test::runCommand(test::shadowlabBinary() + " package --kind student --out " + tarball.string());
+    ASSERT_EQ(pack.exitCode, 0) << pack.output;
+
+    // Contents: one top folder shadowlab/, nothing that bears the solution.
+    const auto entries = lines(test::runCommand("tar tzf '" + tarball.string() + "'").output);
+    ASSERT_GT(entries.size(), 50u);
+    for (const auto& e : entries) ASSERT_EQ(e.rfind("shadowlab/", 0), 0u) << e;
+    EXPECT_TRUE(solutionBearing(entries).empty()) << testing::PrintToString(solutionBearing(entries));
+    ASSERT_EQ(test::runCommand("tar xzf '" + tarball.string() + "' -C '" + dir.string() + "'").exitCode, 0);
+    const fs::path kit = dir / "shadowlab";
+    // Public goldens only: each golden folder belongs to a public scene of the kit.
+    for (const auto& e : fs::directory_iterator(kit / "scenes/goldens"))
+        if (e.is_directory())
+            EXPECT_TRUE(fs::exists(kit / "scenes" / (e.path().filename().string() + ".json"))) << e.path();
+    // No test in the kit needs what the kit lacks.
+    for (const auto& e : fs::directory_iterator(kit / "tests")) {
+        const std::string text = test::readFile(e.path());
+        EXPECT_EQ(text.find("oracles/"), std::string::npos) << e.path();
+        EXPECT_EQ(text.find("submissions"), std::string::npos) << e.path();
+    }
+    EXPECT_TRUE(fs::exists(kit / "framework/numerics/msm_exact_table.cpp"));
+    EXPECT_TRUE(fs::is_regular_file(kit / "kit") &&
+                (fs::status(kit / "kit").permissions() & fs::perms::owner_exec) != fs::perms::none);
+
+    // Its docs are the student variants: no instructor block, no pointer at what is missing.
+    for (const char* doc : {"README.md", "docs/handout.md"}) {
+        const std::string text = test::readFile(kit / doc);
+        for (const char* word : {"<!--", "tests/submissions", "tests/oracles", "reference/*", "catalogue.md"})
+            EXPECT_EQ(text.find(word), std::string::npos) << doc << " mentions " << word;
+        static const std::regex link(R"(\]\(([^)#:]+)(#[^)]*)?\))");
+        for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it)
+            EXPECT_TRUE(fs::exists((kit / doc).parent_path() / (*it)[1].str()))
+                << doc << " links to a missing " << (*it)[1].str();
+    }
+
+    // Build the program as `./kit demo` does, and time it.
+    const auto t0 = Clock::now();
+    auto build = test::runIn(kit, "cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null && "
+                                  "cmake --build build --target shadowlab", 900);
+    const double buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    ASSERT_EQ(build.exitCode, 0) << build.output;
+    std::cout << "student kit: shadowlab built in " << buildSeconds << " s\n";
+
+    // Every command its README and handout show, in their order, ./kit test included.
+    std::vector<std::string> commands;
+    for (const char* doc : {"README.md", "docs/handout.md"})
+        for (const auto& c : test::documentedCommands(test::readFile(kit / doc)))
+            if (std::find(commands.begin(), commands.end(), c) == commands.end()) commands.push_back(c);
+    ASSERT_GE(commands.size(), 10u);
+    std::string failures, skipped;
+    for (const auto& c : commands) {
+        const auto t = Clock::now();
+        failures += test::runDocumented(kit, c, false, "env -u SHADOWLAB_ROOT -u SHADOWLAB_BUILD", &skipped);
+        std::cout << "  " << std::chrono::duration<double>(Clock::now() - t).count() << " s  " << c << "\n";
+    }
+    EXPECT_EQ(failures, "");
+    std::cout << skipped;
+    // The demo rendered the student's stages; the self-check graded them against the goldens.
+    EXPECT_TRUE(fs::exists(kit / "out/demo/student/classic/final.png"));
+    EXPECT_FALSE(fs::exists(kit / "out/demo/reference"));
+    EXPECT_TRUE(fs::exists(kit / "out/grade/results.json"));
+}
+
+}  // namespace sl

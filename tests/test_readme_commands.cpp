@@ -1,0 +1,76 @@
+// Every command line README.md and docs/handout.md show runs, as written (kit_test_support.h
+// says the three exceptions), from a folder laid out like the kit's root: a new line in either
+// file is tested without touching this file. Also: --backend before and after the subcommand.
+#include "kit_test_support.h"
+
+namespace sl {
+namespace {
+
+// A scratch folder that looks like the kit's root: its entries are links to the real ones,
+// build/ is this test's build folder; outputs (out/, cases.csv) land in the scratch folder.
+fs::path kitLookalike(const std::string& name) {
+    fs::path dir = test::tempDir(name);
+    for (const auto& e : fs::directory_iterator(test::root())) {
+        const std::string n = e.path().filename().string();
+        if (n == "build" || n == "out" || n.rfind(".", 0) == 0) continue;
+        fs::create_symlink(e.path(), dir / n);
+    }
+    fs::create_symlink(test::buildDir(), dir / "build");
+    return dir;
+}
+
+}  // namespace
+
+TEST(ReadmeCommands, ExtractionFindsBlockAndInlineCommands) {
+    const std::string md = "Run\n```sh\n./kit demo   # builds\n  # comment only\n"
+                           "build/shadowlab info\n```\nthen `build/shadowlab grade --submission\n"
+                           "student --out g` and `probe moments`.\n";
+    const auto c = test::documentedCommands(md);
+    ASSERT_EQ(c.size(), 3u) << testing::PrintToString(c);
+    EXPECT_EQ(c[0], "./kit demo");
+    EXPECT_EQ(c[1], "build/shadowlab info");
+    EXPECT_EQ(c[2], "build/shadowlab grade --submission student --out g");
+}
+
+TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
+    const fs::path dir = kitLookalike("readme_commands");
+    std::vector<std::string> commands;
+    for (const char* doc : {"README.md", "docs/handout.md"})
+        for (const auto& c : test::documentedCommands(test::readFile(test::root() / doc)))
+            if (std::find(commands.begin(), commands.end(), c) == commands.end()) commands.push_back(c);
+    ASSERT_GE(commands.size(), 10u) << testing::PrintToString(commands);
+    std::string failures, skipped;
+    const std::string env = "SHADOWLAB_BUILD='" + test::buildDir().string() + "'";
+    for (const auto& c : commands) failures += test::runDocumented(dir, c, true, env, &skipped);
+    EXPECT_EQ(failures, "");
+    std::cout << "ran " << commands.size() << " documented commands\n" << skipped;
+    EXPECT_TRUE(fs::exists(dir / "out/classic/final.png"));
+    EXPECT_GT(fs::file_size(dir / "cases.csv"), 1000u);
+}
+
+// README: `build/shadowlab render ... --backend egl` (issue 7 §1): the option after the
+// subcommand, on every subcommand that renders, and before it as before.
+TEST(ReadmeCommands, BackendIsAcceptedBeforeAndAfterEverySubcommandThatRenders) {
+    const std::string bin = test::shadowlabBinary();
+    for (const char* sub : {"render", "view", "grade", "golden", "bench", "probe", "info"}) {
+        auto r = test::runCommand(bin + " " + sub + " --help");
+        EXPECT_NE(r.output.find("--backend"), std::string::npos) << sub << ":\n" << r.output;
+    }
+    const fs::path out = test::tempDir("backend_positions");
+    for (const std::string& line :
+         {bin + " render --scene " + test::scenePath("classic").string() + " --out " +
+              (out / "after").string() + " --backend egl",
+          bin + " --backend egl render --scene " + test::scenePath("classic").string() +
+              " --out " + (out / "before").string()}) {
+        auto r = test::runCommand(line);
+        ASSERT_EQ(r.exitCode, 0) << line << "\n" << r.output;
+        EXPECT_NE(r.output.find("egl"), std::string::npos) << r.output;
+    }
+    auto info = test::runCommand(bin + " info --backend egl");
+    EXPECT_NE(info.output.find("backend:  egl"), std::string::npos) << info.output;
+    auto bad = test::runCommand(bin + " bench --backend vulkan");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.output.find("vulkan"), std::string::npos) << bad.output;
+}
+
+}  // namespace sl
