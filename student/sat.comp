@@ -24,8 +24,8 @@
 // not be written.
 //
 // Stub value: until implemented, the pass writes -1 to every texel, which the framework
-// reports as "not implemented yet" and previews in magenta. A correct solution never writes
-// a negative value.
+// reports as "not implemented yet" and previews in magenta. Only a texel of exactly
+// (-1, -1, -1, -1) reads as the stub: a table stored with an offset may hold negative values.
 
 // 16 x 16 (measured best): give 8 consecutive invocations 8 lines, not 8 chunks of one (performance.md)
 layout(local_size_x = 16, local_size_y = 16, local_size_z = 1) in;
