@@ -33,7 +33,7 @@ struct Rubric {
     // Worst-texel rule (moment-map stages): a texel off by more than worstTexelFactor times
     // its tolerance caps the test at worstTexelCap[stage] of its points, however few texels
     // are off: a border or edge bug touches few texels but is a bug (docs/grading.md).
-    double worstTexelFactor = 100.0;
+    double worstTexelFactor = 5.0;
     std::map<std::string, double> worstTexelCap;  // stage -> cap; absent: no cap
 
     // Points for a stage's pass fraction, out of `max`.

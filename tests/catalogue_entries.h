@@ -3,6 +3,7 @@
 // and the reference renders of the public scenes (test_catalogue.cpp, test_catalogue_grade.cpp).
 #pragma once
 
+#include "depth_ladder.h"
 #include "gl_test_support.h"
 #include "oracles/moment_oracles.h"
 #include "probe.h"
@@ -35,6 +36,7 @@ struct Entry {
     std::vector<std::string> files;       // the submitted files: the folder's, + a SAT partner from sat_base/
     std::vector<std::string> scenes;
     std::string models;
+    bool robustnessReported = false;      // msm alternative not required to be robust (Cramer)
     bool mutant() const { return kind == "mutant"; }
     fs::path path() const { return submissionsDir() / file; }
     fs::path folder() const { return path().parent_path(); }
@@ -55,6 +57,7 @@ std::vector<Entry> loadCatalogue() {
         entry.stage = e.value("stage", "");
         entry.file = e.value("file", "");
         entry.models = e.value("models", "");
+        entry.robustnessReported = e.value("robustness", "") == "reported";
         if (e.contains("files"))
             for (const json& f : e["files"]) entry.files.push_back(f.get<std::string>());
         else

@@ -228,6 +228,21 @@ void checkStageOutput(const Entry& e) {
             EXPECT_LE(altErr, 2 * refErr + 1e-4);
         }
     }
+    if (e.stage == "moments") {
+        // The moments stage also probes relativeDepth outside [near, far] (depth_ladder.h),
+        // which no moment map shows: the shadow pass clips such depths away.
+        test::sharedContext();
+        const auto& rows = relativeDepthLadder();
+        const Image mine = depthLadderImage(probeMoments(entryLibrary(e), rows));
+        const Image ref = depthLadderImage(probeMoments(test::library("reference"), rows));
+        const Difference d = compare(mine, ref, kTexelTolerance);
+        measured += "depth ladder: " + d.str() + "; ";
+        std::printf("[catalogue] %-31s %-11s depth ladder: %s\n", e.name.c_str(), e.kind.c_str(),
+                    d.str().c_str());
+        if (e.mutant() && d.maxAbs >= kMutantMaxAbs && d.fraction >= kMutantMinFraction)
+            visibleSomewhere = true;
+        if (!e.mutant()) EXPECT_LE(d.maxAbs, 64 * u) << "depth ladder: " << d.str();
+    }
     if (e.mutant()) {
         EXPECT_TRUE(visibleSomewhere)
             << e.name << " (" << e.models << ") must differ from the reference on its stage's "
