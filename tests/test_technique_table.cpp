@@ -88,6 +88,11 @@ TEST(TechniqueTable, OverrideKeepsAnAllowedFilterAndReplacesOthers) {
     fx.filter = FilterKind::Gaussian;
     overrideTechnique(fx, Technique::MsmSoft);
     EXPECT_EQ(fx.filter, FilterKind::Sat);
+    // The same technique keeps its parameters and takes the given ones on top.
+    overrideTechnique(fx, Technique::Vsm, {{"bleedReduction", 0.0}});
+    overrideTechnique(fx, Technique::Vsm, {{"minVariance", 1e-3}});
+    EXPECT_DOUBLE_EQ(techniqueParameter(fx, "bleedReduction"), 0.0);
+    EXPECT_DOUBLE_EQ(techniqueParameter(fx, "minVariance"), 1e-3);
     EXPECT_THROW(overrideTechnique(fx, Technique::Vsm, {{"nope", 1}}), std::invalid_argument);
     EXPECT_THROW(overrideTechnique(fx, Technique::Vsm, {{"minVariance", -1}}), std::invalid_argument);
 }

@@ -265,9 +265,11 @@ void validateTechnique(ShadowEffect& fx, bool filterDeclared, const nlohmann::js
 void overrideTechnique(ShadowEffect& fx, Technique t,
                        const std::vector<std::pair<std::string, double>>& parameters) {
     const TechniqueRow& row = techniqueRow(t);
+    // The scene's own technique keeps the scene's parameters (the given ones change them);
+    // another technique starts from its row's defaults.
+    if (t != fx.technique) fx.parameters.clear();
     fx.technique = t;
     if (!allows(row, fx.filter)) fx.filter = row.filters.front();
-    fx.parameters.clear();
     for (const auto& [name, value] : parameters) {
         const TechniqueParameter* p = findParameter(row, name);
         if (!p)

@@ -91,8 +91,9 @@ void validateTechnique(ShadowEffect& fx, bool filterDeclared, const nlohmann::js
                        const std::string& file, const std::string& pointer);
 
 // Switches the effect to technique `t` (the `--technique` override): keeps the scene's filter
-// if the row allows it, else takes the row's default; `parameters` replace the scene's (they
-// are checked against the row). Throws std::invalid_argument with a clear message.
+// if the row allows it, else takes the row's default. The scene's own technique keeps the
+// scene's parameters; another starts from its row's defaults; `parameters` (checked against the
+// row) are set on top. Throws std::invalid_argument with a clear message.
 void overrideTechnique(ShadowEffect& fx, Technique t,
                        const std::vector<std::pair<std::string, double>>& parameters = {});
 // "vsm" or "vsm:bleedReduction=0.3:minVariance=1e-4" -> technique and parameters.

@@ -47,7 +47,7 @@ float shadowIntensityPcf(ShadowQuery q) {
             sum += cx * cy * pcfTest(q, ivec2(x, y), zb);
         }
     }
-    return sum / max((hi.x - lo.x) * (hi.y - lo.y), 1e-12);
+    return clamp(sum / max((hi.x - lo.x) * (hi.y - lo.y), 1e-12), 0.0, 1.0);
 #else
     // Bilinear taps, as GL_LINEAR reads a map with texel centres at (i + ½) / size.
     vec2 p = q.uv * uMapTexels - 0.5;
@@ -61,7 +61,8 @@ float shadowIntensityPcf(ShadowQuery q) {
     g = vec4(pcfTest(q, t, zb), pcfTest(q, t + ivec2(1, 0), zb), pcfTest(q, t + ivec2(0, 1), zb),
              pcfTest(q, t + ivec2(1, 1), zb));
 #endif
-    return mix(mix(g.x, g.y, f.x), mix(g.z, g.w, f.x), f.y);
+    // The weights sum to 1 only up to rounding: keep G in [0, 1] (lighting flags G > 1).
+    return clamp(mix(mix(g.x, g.y, f.x), mix(g.z, g.w, f.x), f.y), 0.0, 1.0);
 #endif
 }
 #define SL_SHADOW_INTENSITY shadowIntensityPcf
