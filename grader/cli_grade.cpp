@@ -38,7 +38,7 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
     grade->add_option("--reference", g->o.reference, "live, golden or auto (live if reference/ exists)")
         ->check(CLI::IsMember({"live", "golden", "auto"}));
     grade->add_option("--timeout", g->o.timeoutSeconds,
-                      "seconds per render (default: 20x the reference's own render of the scene, "
+                      "seconds per render (default: 10x the reference's own render of the scene, "
                       "at least 5 s; 20 s with goldens only)")
         ->check(CLI::PositiveNumber);
     grade->add_option("--memory", g->o.memoryMb, "MB of address space per render (default 4096)")

@@ -28,7 +28,7 @@ std::vector<GradedScene> uniqueScenes(const std::vector<GradedScene>& scenes);
 // kTimeoutFactor times the reference's own render of that scene on this machine, at the same
 // time, so that a busy machine gives the same grade (at least kTimeoutFloor seconds); without
 // a reference render to time (goldens only), kTimeoutDefault.
-constexpr double kTimeoutFactor = 20.0;
+constexpr double kTimeoutFactor = 10.0;
 constexpr double kTimeoutFloor = 5.0;
 constexpr double kTimeoutDefault = 20.0;
 double stageTimeout(const GradeOptions& o, double referenceSeconds);

@@ -80,6 +80,13 @@ TEST(ShaderSource, StageFilesComeFromTheirFolderOthersFromSolutionThenShaders) {
     EXPECT_EQ(lib.resolve("msm.glsl"), a / "msm.glsl");
     EXPECT_EQ(lib.resolve("common.glsl"), a / "common.glsl");  // solution first
     EXPECT_EQ(lib.resolve("common.glsl", b / "msm.glsl"), b / "common.glsl");  // includer's own
+    // A solution's file never reaches into another solution's folder for a helper: a
+    // student's msm.glsl (b) graded with the reference's other stages (a).
+    ShaderLibrary mixed = ShaderLibrary::mixed(a, {{"msm.glsl", b}}, test::root());
+    EXPECT_THROW(mixed.resolve("common_a.glsl", b / "msm.glsl"), ShaderError);
+    write(a / "common_a.glsl", "");
+    EXPECT_EQ(mixed.resolve("common_a.glsl", a / "sat.comp"), a / "common_a.glsl");
+    EXPECT_THROW(mixed.resolve("common_a.glsl", b / "msm.glsl"), ShaderError);
     EXPECT_EQ(lib.resolve("only_b.glsl"), b / "only_b.glsl");
     EXPECT_THROW(lib.resolve("absent.glsl"), ShaderError);
 }

@@ -73,7 +73,25 @@ fs::path ShaderLibrary::resolve(const std::string& fileName, const fs::path& inc
         return p;
     }
     std::vector<fs::path> dirs;
-    if (!includer.empty()) dirs.push_back(includer.parent_path());
+    if (!includer.empty()) {
+        // A solution's file (student or reference) finds helpers in its own folder and in the
+        // framework's folders (shaders/) only: never in another solution's folder.
+        const fs::path own = includer.parent_path();
+        auto isSolution = [&](const fs::path& d) {
+            for (const auto& [name, dir] : stageDirs_)
+                if (dir == d) return true;
+            return false;
+        };
+        dirs.push_back(own);
+        if (isSolution(own)) {
+            for (const auto& d : searchDirs_)
+                if (!isSolution(d)) dirs.push_back(d);
+            for (const auto& dir : dirs)
+                if (fs::is_regular_file(dir / fileName, ec)) return dir / fileName;
+            throw ShaderError(fileName + ": not found next to " + includer.filename().string() +
+                                  " or in shaders/", "");
+        }
+    }
     for (const auto& [name, dir] : stageDirs_)
         if (std::find(dirs.begin(), dirs.end(), dir) == dirs.end()) dirs.push_back(dir);
     dirs.insert(dirs.end(), searchDirs_.begin(), searchDirs_.end());

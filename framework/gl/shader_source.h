@@ -78,7 +78,8 @@ public:
                              const std::vector<std::string>& defines) const;
 
     // A file by name, as a top-level file (throws ShaderError if absent); with `includer`,
-    // as that file's #include: its own folder first.
+    // as that file's #include: its own folder first; a solution's file (in a stage folder)
+    // looks only there and in the search folders that hold no stage (shaders/).
     fs::path resolve(const std::string& fileName, const fs::path& includer = {}) const;
     std::string displayPath(const fs::path& path) const;
     const std::map<std::string, fs::path>& stageDirs() const { return stageDirs_; }
