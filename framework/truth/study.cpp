@@ -217,7 +217,10 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         s.shadow.satKernelTexels = float(2 * c.radius + 1);
         overrideTechnique(s.shadow, c.technique, c.params);
         s.shadow.filter = c.filter;
-        const PassPlan plan = planPasses(s);
+        // No SAT resolve: it makes msm4's filtered moments for output only, and no frame needs it.
+        PlanOptions planOptions;
+        planOptions.resolveSat = false;
+        const PassPlan plan = planPasses(s, planOptions);
         if (plan.shadowLights.empty()) throw std::runtime_error(base.path + ": no light casts shadows");
         const int light = plan.shadowLights.front();
         const MapLayout layout = mapLayout(s.shadow);
