@@ -5,6 +5,7 @@
 #include "test_grader_support.h"
 
 #include "results.h"
+#include "scene_list.h"
 #include "rubric.h"
 
 namespace sl {
@@ -128,6 +129,34 @@ TEST(InstructorHidden, AGradeWithAHiddenSceneShowsStudentsNothingOfIt) {
     EXPECT_NE(staff.find("secret_shelf"), std::string::npos);
     EXPECT_NE(staff.find("hidden-badge"), std::string::npos);
     EXPECT_TRUE(fs::exists(out / "report-staff" / "img" / "secret_shelf_moments_moments_raw_ref.png"));
+}
+
+}  // namespace sl
+
+namespace sl {
+
+TEST(InstructorHidden, HiddenMeansWhatStudentsDoNotHave) {
+    const fs::path scenes = test::root() / "scenes";
+    EXPECT_FALSE(grader::isHiddenScenePath(scenes / "classic.json"));
+    EXPECT_FALSE(grader::isHiddenScenePath(scenes / "ladder" / "x.json"));  // ships to students
+    EXPECT_TRUE(grader::isHiddenScenePath(scenes / "hidden" / "shelf.json"));
+    EXPECT_TRUE(grader::isHiddenScenePath(scenes / ".." / "private" / "shelf.json"));
+    EXPECT_TRUE(grader::isHiddenScenePath("/course/private/shelf.json"));
+}
+
+TEST(InstructorHidden, SceneListGradesEachSceneOnceAndRefusesTwoScenesOfOneName) {
+    const auto all = grader::gradedScenes();
+    const auto twice = grader::gradedScenes({"classic", "public", test::scenePath("classic").string()});
+    ASSERT_EQ(twice.size(), all.size());
+    for (size_t i = 0; i < all.size(); ++i) EXPECT_EQ(twice[i].name, all[i].name);  // classic first
+    const fs::path dir = test::tempDir("instructor_scene_names");
+    fs::copy_file(test::scenePath("contact"), dir / "classic.json");
+    try {
+        grader::gradedScenes({"classic", (dir / "classic.json").string()});
+        ADD_FAILURE() << "two scenes named classic were accepted";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("two scenes are named \"classic\""), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace sl
