@@ -98,9 +98,12 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
     const fs::path script = repoRoot() / "tools" / "study_plots.gp";
     const std::string title = rows.front().scene;
     const std::string cmd = "gnuplot -e \"dir='" + (dir / "plots").string() + "'; names='" + names +
-                            "'; title='" + title + "'\" '" + script.string() + "' 2>&1";
+                            "'; title='" + title + "'\" '" + script.string() + "' > '" +
+                            (dir / "plots" / "gnuplot.log").string() + "' 2>&1";
+    // gnuplot's warnings (a one-point series has an "empty range") go to plots/gnuplot.log.
     if (std::system(cmd.c_str()) != 0)
-        throw std::runtime_error("gnuplot failed (" + cmd + "); is gnuplot-nox installed?");
+        throw std::runtime_error("gnuplot failed (" + cmd + "; see plots/gnuplot.log); is "
+                                 "gnuplot-nox installed?");
     log << "wrote " << (dir / "pareto.svg").string() << ", pareto.png, pareto_bytes.{svg,png}\n";
 
     std::ofstream page(dir / "index.html");
