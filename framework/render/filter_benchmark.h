@@ -14,8 +14,8 @@ struct BenchRow {
     std::string name;        // "gaussian r=8, y"
     double medianMs = 0;
     double baselineMs = 0;   // median of what it is compared with (copy passes, a lighting pass)
-    double ratio = 0;        // median over repeats of (pass / baseline of the same repeat)
-    double ratioMin = 0;     // spread of that ratio over the repeats
+    double ratio = 0;        // medianMs / baselineMs
+    double ratioMin = 0;     // spread: min-max over repeats of pass / baseline of that repeat
     double ratioMax = 0;
     double goal = 0;         // the ratio it should stay under (0: no goal)
     bool implemented = true; // false: the stage wrote the stub value -1 (not timed meaningfully)
