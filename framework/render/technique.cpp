@@ -34,7 +34,7 @@ std::vector<TechniqueRow> makeTable() {
                  false, false, false, false, "techniques/hard.glsl", "SL_TECHNIQUE_HARD",
                  "SL_STORE_DEPTH", depthBiasParameters()});
     t.push_back({Technique::SecondDepth, "second-depth", "midpoint of first and second depth",
-                 "(z1 + z2) / 2", 1, 32, {F::None}, false, false, true, false,
+                 "z1; the peeling pass z2 (lighting: (z1 + z2) / 2)", 1, 32, {F::None}, false, false, true, false,
                  "techniques/second_depth.glsl", "SL_TECHNIQUE_SECOND_DEPTH", "SL_STORE_DEPTH",
                  {{"peelEpsilon", 1e-5, 0.0, 0.01, false, false,
                    "a second surface lies at least this far (relative depth) behind the first"}}});
