@@ -11,7 +11,9 @@
 //               light's forward axis (spot light: view-space -z; directional light: along its
 //               direction from the plane through the scene's bounds).
 //   depthRange  (near, far) in the same units, from the scene. far > near.
-//   returns     (lightDepth - near) / (far - near), clamped to [0, 1].
+//   returns     (lightDepth - near) / (far - near), clamped to [0, 1]. The grader checks the
+//               clamp on light depths outside [near, far] too (`shadowlab probe moments
+//               --generate depth-ladder` writes them, with the expected moments).
 //
 // vec4 computeMoments(float z)
 //   z           a relative depth in [0, 1].
