@@ -11,6 +11,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -94,25 +95,40 @@ struct Project {
         const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
         const double depth = glm::dot(p - glm::dvec3(view.eye), glm::dvec3(view.forward));
         const double rel = (depth - view.depthRange.x) / double(view.depthRange.y - view.depthRange.x);
-        if (clip.w <= 0.0 || std::fabs(ndc.x) > 1.0 || std::fabs(ndc.y) > 1.0 || rel < 0.0 || rel > 1.0) {
-            out << "    outside the light's shadow frustum (relative depth " << num(rel)
-                << "): no probe here\n";
+        if (clip.w <= 0.0 || std::fabs(ndc.x) > 1.0 || std::fabs(ndc.y) > 1.0) {
+            out << "    outside the light's shadow map: no probe here\n";
             return -1;
         }
+        // Outside [near, far] the lighting pass clamps the relative depth (docs/scenes.md), and
+        // the shadow pass clips casters there: only casters inside the range can shadow.
+        const double nearD = view.depthRange.x, farD = view.depthRange.y;
+        const double seen = std::clamp(depth, nearD, farD);
+        auto inRange = [&](double d) { return d >= nearD && d <= farD; };
         const int N = fx.mapSize;
         const int tx = std::min(N - 1, int(std::floor((ndc.x * 0.5 + 0.5) * N)));
         const int ty = std::min(N - 1, int(std::floor((ndc.y * 0.5 + 0.5) * N)));
         out << "    texel (" << tx << ", " << ty << ") from the bottom-left, light depth "
-            << num(depth) << ", relative depth " << num(rel, 6) << "\n";
+            << num(depth) << ", relative depth " << num(rel, 6)
+            << (rel < 0.0 || rel > 1.0 ? " (outside the depth range: clamped to " +
+                                             num(std::clamp(rel, 0.0, 1.0)) + ")" : std::string())
+            << "\n";
         // The light's own ray through p: an occluder before it, the receiver at it.
         glm::dvec3 o, d;
         lightRay(view, ndc.x, ndc.y, o, d);
         const double tp = glm::length(p - o) / glm::length(d);  // p = o + tp * d
         const double dt = eps / glm::length(d);
-        const RayHit occ = rays.first(o, d, 0.0, tp - dt, true);
         const RayHit recv = rays.first(o, d, tp - dt, tp + dt, false);
+        // The first caster before the point that the map holds (inside the depth range).
+        RayHit occ;
+        double od = 0.0;
+        for (double t0 = 0.0;;) {
+            const RayHit h = rays.first(o, d, t0, tp - dt, true);
+            if (!h.hit()) break;
+            od = glm::dot(o + h.t * d - glm::dvec3(view.eye), glm::dvec3(view.forward));
+            if (inRange(od) && od < seen - eps) { occ = h; break; }
+            t0 = h.t + 1e-9;
+        }
         if (occ.hit()) {
-            const double od = glm::dot(o + occ.t * d - glm::dvec3(view.eye), glm::dvec3(view.forward));
             out << "    shadowed: the light sees " << objectName(occ.object) << " first, "
                 << num(depth - od) << " nearer than the point\n";
         } else {
@@ -140,7 +156,7 @@ struct Project {
                 const RayHit hit = rays.first(o, d, 0.0, 1e30, true);
                 if (!hit.hit() || (recv.hit() && hit.object == recv.object)) continue;
                 const double hd = glm::dot(o + hit.t * d - glm::dvec3(view.eye), glm::dvec3(view.forward));
-                if (hd < depth - eps) ++occluded;
+                if (inRange(hd) && hd < seen - eps) ++occluded;
             }
         out << "    footprint (" << filter << ", " << 2 * h + 1 << " x " << 2 * h + 1
             << " texels with the bilinear lookup): " << occluded << " of " << total
