@@ -31,6 +31,7 @@ struct Combination {
     std::string spec;
     Technique technique;
     std::vector<std::pair<std::string, double>> params;
+    double momentBias;  // < 0: the scene's
     FilterKind filter;
     int radius;
     int size;
@@ -46,8 +47,15 @@ FilterKind filterFromName(const std::string& name) {
 std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::string>& notes) {
     std::vector<Combination> out;
     for (const std::string& spec : o.techniques) {
-        auto [t, params] = parseTechniqueSpec(spec);
+        auto [t, allParams] = parseTechniqueSpec(spec);
         const TechniqueRow& row = techniqueRow(t);
+        // "momentBias" (α) is the scene's shadow.momentBias, not a row parameter: the study lets
+        // a spec set it (msm4:momentBias=1e-4) so that α can be swept like the rest.
+        std::vector<std::pair<std::string, double>> params;
+        double momentBias = -1.0;
+        for (const auto& [name, value] : allParams)
+            if (name == "momentBias") momentBias = value;
+            else params.emplace_back(name, value);
         std::vector<FilterKind> filters;
         for (const auto& f : o.filters) {
             const FilterKind k = filterFromName(f);
@@ -61,10 +69,10 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
         for (int size : o.mapSizes)
             for (FilterKind f : filters) {
                 if (f == FilterKind::None) {
-                    out.push_back({spec, t, params, f, 0, size});
+                    out.push_back({spec, t, params, momentBias, f, 0, size});
                     continue;
                 }
-                for (int r : o.radii) out.push_back({spec, t, params, f, r, size});
+                for (int r : o.radii) out.push_back({spec, t, params, momentBias, f, r, size});
             }
     }
     return out;
@@ -217,6 +225,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         s.shadow.satKernelTexels = float(2 * c.radius + 1);
         overrideTechnique(s.shadow, c.technique, c.params);
         s.shadow.filter = c.filter;
+        if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
         // No SAT resolve: it makes msm4's filtered moments for output only, and no frame needs it.
         PlanOptions planOptions;
         planOptions.resolveSat = false;
@@ -226,8 +235,9 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         const MapLayout layout = mapLayout(s.shadow);
         row.kernelTexels = c.filter == FilterKind::None ? 1.0 : 2.0 * c.radius + 1.0;
         row.bits = techniqueRow(c.technique).bitsPerChannel;
+        row.parameters = "momentBias=" + fmt("%g", s.shadow.momentBias);
         for (const auto& [name, value] : resolvedParameters(s.shadow))
-            row.parameters += (row.parameters.empty() ? "" : ";") + name + "=" + fmt("%g", value);
+            row.parameters += ";" + name + "=" + fmt("%g", value);
         row.mapBytes = size_t(c.size) * c.size * size_t(layout.layers) * size_t(layout.bytesPerTexel);
         row.planBytes = plan.bytes(light);
 
