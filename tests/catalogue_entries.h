@@ -37,6 +37,7 @@ struct Entry {
     std::vector<std::string> scenes;
     std::string models;
     bool robustnessReported = false;      // msm alternative not required to be robust (Cramer)
+    bool borderOnly = false;              // mutant visible only at the map's border ("touches")
     bool mutant() const { return kind == "mutant"; }
     fs::path path() const { return submissionsDir() / file; }
     fs::path folder() const { return path().parent_path(); }
@@ -58,6 +59,7 @@ std::vector<Entry> loadCatalogue() {
         entry.file = e.value("file", "");
         entry.models = e.value("models", "");
         entry.robustnessReported = e.value("robustness", "") == "reported";
+        entry.borderOnly = e.value("touches", "") == "border";
         if (e.contains("files"))
             for (const json& f : e["files"]) entry.files.push_back(f.get<std::string>());
         else
