@@ -3,6 +3,8 @@
 // when the program's build and the kit in use differ; $SHADOWLAB_ROOT still wins.
 #include "kit_test_support.h"
 
+#include <unistd.h>
+
 namespace sl {
 namespace {
 
@@ -51,13 +53,17 @@ TEST(KitRoot, ACopiedKitUsesItsOwnFoldersAndWarns) {
 
 TEST(KitRoot, AProgramOutsideAnyKitFindsTheKitOfTheCurrentFolder) {
     const fs::path kit = copiedKit("kit_root_cwd");
-    const fs::path elsewhere = test::tempDir("kit_root_bin");
+    // Outside every kit (the tests' scratch folder may lie inside the checkout).
+    const fs::path elsewhere = fs::temp_directory_path() / ("shadowlab-kit-root-" + std::to_string(::getpid()));
+    fs::remove_all(elsewhere);
+    fs::create_directories(elsewhere);
     fs::copy_file(test::shadowlabBinary(), elsewhere / "shadowlab");
     auto r = test::runCommand("cd '" + (kit / "scenes").string() + "' && " +
                               (elsewhere / "shadowlab").string() + " info");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("kit root: " + fs::weakly_canonical(kit).string() + " (from the current folder)"),
               std::string::npos) << r.output;
+    fs::remove_all(elsewhere);
 }
 
 TEST(KitRoot, GradeSaysWhichRootItUses) {

@@ -1,0 +1,75 @@
+// `./kit deps --check` (issue 7 §1): the derived package check. It runs the tracing tool
+// (../shared/tools/fresh-deps, or $SHADOWLAB_FRESH_DEPS) twice, against PACKAGES and against
+// the autograder's GRADER_PACKAGES, fails when the tool names a missing package, and only warns
+// when the tool cannot run (no strace, no tool): CI must not fail for a missing strace.
+// Stand-in tools with the real one's exit codes (0 covered, 1 missing, 2 could not run) test the
+// wiring; .ci/run runs the real one after the build.
+#include "kit_test_support.h"
+
+namespace sl {
+namespace {
+
+test::CommandResult kitDepsCheckWith(const std::string& toolBody, const std::string& name) {
+    const fs::path dir = test::tempDir(name);
+    const fs::path tool = dir / "fresh-deps";
+    std::ofstream(tool) << "#!/bin/sh\n" << toolBody << "\n";
+    fs::permissions(tool, fs::perms::owner_all);
+    return test::runCommand("SHADOWLAB_FRESH_DEPS='" + tool.string() + "' '" +
+                            (test::root() / "kit").string() + "' deps --check");
+}
+
+}  // namespace
+
+TEST(KitDeps, PackagesTheBuildUsesAreListed) {
+    const std::string kit = test::readFile(test::root() / "kit");
+    const std::string packages = kit.substr(kit.find("PACKAGES=("), kit.find(")", kit.find("PACKAGES=(")) - kit.find("PACKAGES=("));
+    for (const char* p : {"openimageio-tools", "libembree-dev", "libimgui-dev", "gnuplot-nox", "ccache"})
+        EXPECT_NE(packages.find(std::string(" ") + p), std::string::npos) << p;
+    // fresh-deps reads the first PACKAGES=( array: it must be the full list, not the grader's.
+    EXPECT_LT(kit.find("\nPACKAGES=("), kit.find("GRADER_PACKAGES=("));
+}
+
+TEST(KitDeps, AMissingPackageFailsTheCheck) {
+    auto r = kitDepsCheckWith("echo '  libfoo-dev  e.g. /usr/include/foo.h'; exit 1", "deps_missing");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("libfoo-dev"), std::string::npos) << r.output;
+}
+
+TEST(KitDeps, ACoveredBuildPassesBothLists) {
+    auto r = kitDepsCheckWith("echo \"called with: $*\"; exit 0", "deps_ok");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("called with: --packages"), std::string::npos) << r.output;  // grader list
+    EXPECT_NE(r.output.find("every package the build uses is listed"), std::string::npos) << r.output;
+}
+
+TEST(KitDeps, AToolThatCannotRunOnlyWarns) {
+    auto r = kitDepsCheckWith("echo 'fresh-deps: needs strace'; exit 2", "deps_cannot_run");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("could not run"), std::string::npos) << r.output;
+    auto none = test::runCommand("SHADOWLAB_FRESH_DEPS=/nonexistent/fresh-deps '" +
+                                 (test::root() / "kit").string() + "' deps --check");
+    EXPECT_EQ(none.exitCode, 0) << none.output;
+    EXPECT_NE(none.output.find("skipped"), std::string::npos) << none.output;
+}
+
+}  // namespace sl
+
+namespace sl {
+
+// Issue 10: benchmarks (suites named Bench*) carry the CTest label `bench`; `./kit test` runs
+// `ctest -LE bench` and so never times anything, `./kit bench` runs `ctest -L bench`.
+TEST(KitBenchLabel, BenchSuitesAreLabelledAndLeftOutOfTheTestRun) {
+    const std::string build = test::buildDir().string();
+    auto bench = test::runCommand("ctest --test-dir '" + build + "' -N -L bench");
+    auto rest = test::runCommand("ctest --test-dir '" + build + "' -N -LE bench");
+    ASSERT_EQ(bench.exitCode, 0) << bench.output;
+    EXPECT_NE(bench.output.find("BenchFilters."), std::string::npos) << bench.output;
+    EXPECT_EQ(bench.output.find("KitBenchLabel."), std::string::npos) << bench.output;
+    EXPECT_EQ(rest.output.find("BenchFilters."), std::string::npos) << rest.output;
+    EXPECT_NE(rest.output.find("KitBenchLabel."), std::string::npos) << rest.output;
+    const std::string kit = test::readFile(test::root() / "kit");
+    EXPECT_NE(kit.find("-LE bench"), std::string::npos);
+    EXPECT_NE(kit.find("-L bench"), std::string::npos);
+}
+
+}  // namespace sl
