@@ -29,7 +29,7 @@ for s in "$ROOT"/scenes/classic.json "$ROOT"/scenes/contact.json \
   SCENES+=("$s")
 done
 mkdir -p "$DOCS"
-"$BIN" info > "$DOCS/machine.txt"
+"$BIN" info | grep -v "^kit root" > "$DOCS/machine.txt"
 grep -m1 'model name' /proc/cpuinfo | sed 's/^model name\s*: /cpu:      /' >> "$DOCS/machine.txt"
 echo "threads:  $(nproc)" >> "$DOCS/machine.txt"
 for scene in "${SCENES[@]}"; do
