@@ -12,6 +12,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 
 namespace sl {
 namespace {
@@ -20,7 +21,8 @@ class Study : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         test::sharedContext();
-        dir_ = new fs::path(test::tempDir("study_tiny"));
+        // CTest runs each test in its own process, maybe at once: one folder per process.
+        dir_ = new fs::path(test::tempDir("study_tiny_" + std::to_string(::getpid())));
         StudyOptions o = tinyOptions();
         std::ostringstream log;
         summary_ = new StudySummary(runStudy(o, log));
