@@ -50,7 +50,7 @@ protected:
 fs::path* Study::dir_ = nullptr;
 StudySummary* Study::summary_ = nullptr;
 
-TEST_F(Study, OneRowPerCombinationAndNoNaN) {
+TEST_F(Study, OneRowPerCombinationNoNaNWorseSmallMapAndReuse) {
     EXPECT_EQ(summary_->planned, 4);
     EXPECT_EQ(summary_->run, 4);
     const auto rows = readStudyCsv(*dir_ / "study.csv");
@@ -75,10 +75,8 @@ TEST_F(Study, OneRowPerCombinationAndNoNaN) {
     // Map bytes follow the format: msm4 stores 4 floats a texel, vsm 2.
     for (const StudyRow& r : rows)
         EXPECT_EQ(r.mapBytes, size_t(r.mapSize) * r.mapSize * (r.technique == "msm4" ? 16u : 8u)) << r.key();
-}
-
-TEST_F(Study, A128MapIsMeasurablyWorseThanA2048Map) {
-    const auto rows = readStudyCsv(*dir_ / "study.csv");
+    // (One test, not three: CTest runs each test in its own process, and each reruns the sweep.)
+    // The error measure can fail: a 128² map is measurably worse than a 2048² one.
     for (const std::string tech : {"msm4", "vsm"}) {
         const StudyRow *small = nullptr, *large = nullptr;
         for (const StudyRow& r : rows)
@@ -87,10 +85,15 @@ TEST_F(Study, A128MapIsMeasurablyWorseThanA2048Map) {
         EXPECT_GT(small->truth.rmse, 1.3 * large->truth.rmse) << tech;
         EXPECT_GT(small->truth.p99, large->truth.p99) << tech;
     }
+    // What was reused, said per row. Rows in order msm4 128, msm4 2048, vsm 128, vsm 2048: vsm
+    // shares msm4's depth maps and filtered truths (same size, same kernel).
+    EXPECT_NE(rows[0].reused.find("depth map 128² rendered"), std::string::npos) << rows[0].reused;
+    EXPECT_NE(rows[2].reused.find("depth map 128² shared"), std::string::npos) << rows[2].reused;
+    EXPECT_NE(rows[2].reused.find("filtered truth shared"), std::string::npos) << rows[2].reused;
 }
 
 TEST_F(Study, ResumesAndRedoesOnlyMissingRows) {
-    const fs::path copy = test::tempDir("study_resume");
+    const fs::path copy = test::tempDir("study_resume_" + std::to_string(::getpid()));
     fs::copy(*dir_ / "study.csv", copy / "study.csv");
     {   // Drop the last row and cut the one before short, as an interrupted sweep would.
         std::ifstream in(copy / "study.csv");
@@ -110,16 +113,6 @@ TEST_F(Study, ResumesAndRedoesOnlyMissingRows) {
     EXPECT_EQ(s.run, 2);
     const auto rows = readStudyCsv(copy / "study.csv");
     EXPECT_EQ(rows.size(), 4u);
-}
-
-TEST_F(Study, SaysWhatItReused) {
-    const auto rows = readStudyCsv(*dir_ / "study.csv");
-    ASSERT_EQ(rows.size(), 4u);
-    // Rows in order msm4 128, msm4 2048, vsm 128, vsm 2048: vsm shares msm4's depth maps and
-    // filtered truths (same size, same kernel).
-    EXPECT_NE(rows[0].reused.find("depth map 128² rendered"), std::string::npos) << rows[0].reused;
-    EXPECT_NE(rows[2].reused.find("depth map 128² shared"), std::string::npos) << rows[2].reused;
-    EXPECT_NE(rows[2].reused.find("filtered truth shared"), std::string::npos) << rows[2].reused;
 }
 
 TEST_F(Study, PlotsAndPageOpenInHeadlessChromium) {
