@@ -4,7 +4,8 @@
 # light-bleeding and contact-hardening scenes, into out/study/<scene>/, then copies each
 # scene's table, plots and page (with the images the page shows) into docs/accuracy/<scene>/.
 #   tools/study_all.sh SHADOWLAB [--quick] [extra shadowlab study options...]
-# --quick: two map sizes and two radii, for a fast look (not what the docs show).
+# --quick: two map sizes and two radii, for a fast look, into out/study/quick/ (docs untouched).
+# A scene's folder is resumed: rows already in its study.csv are kept (delete it to redo).
 set -euo pipefail
 BIN="$1"; shift
 ROOT="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
@@ -14,8 +15,10 @@ DOCS="$ROOT/docs/accuracy"
 # (the SAT box 3 and 9 texels), both filters, 2 timed frames, a 192² image. (Sized to finish in
 # ~20 minutes on a loaded 2-core machine; widen it with extra options, e.g. --map-sizes.)
 SWEEP=(--map-sizes 256,512,1024 --radii 1,4 --filters gaussian,sat --repeats 2 --image 192)
+QUICK=0
 if [ "${1:-}" = --quick ]; then
-  shift
+  shift; QUICK=1
+  OUT="$OUT/quick"; DOCS="$OUT/docs"  # never mixed with, nor replacing, the documented run
   SWEEP=(--map-sizes 256,1024 --radii 2,8 --filters gaussian,sat --repeats 2 --image 128)
 fi
 SCENES=()
@@ -48,7 +51,7 @@ ALPHA=()
 for a in 0 3e-6 3e-5 3e-4 3e-3; do ALPHA+=("msm4:momentBias=$a"); done
 for name in classic light_bleeding; do
   scene="$ROOT/scenes/$name.json"; [ -f "$scene" ] || scene="$ROOT/scenes/ladder/$name.json"
-  [ "${1:-}" = --quick ] && break
+  [ "$QUICK" = 1 ] && break
   echo "== alpha: $name"
   "$BIN" study --scene "$scene" --out "$OUT/alpha_$name" --techniques "$(IFS=,; echo "${ALPHA[*]}")" \
     --map-sizes 512 --radii 1,4 --filters gaussian,sat --repeats 2 --image 192 "$@"
