@@ -302,14 +302,20 @@ int runProbe(const ProbeArgs& a, const std::string& backend) {
                 err = std::max(err, std::isfinite(out[i][c]) ? std::fabs(out[i][c] - want[c]) : INFINITY);
             results.push_back({out[i].x, out[i].y, out[i].z, out[i].w, want.x, want.y, want.z, want.w, err});
         }
+        // Appended last: b1..b4, the exact means, max_error, and texel_centres (unless the
+        // input has it already, as `--generate boxes` writes it).
         Table shown = t;
-        if (std::find(t.header.begin(), t.header.end(), "texel_centres") == t.header.end()) {
-            for (size_t i = 0; i < shown.rows.size(); ++i)
-                shown.rows[i].push_back(texelCentres(boxes[i].x, boxes[i].y));
-            shown.header.push_back("texel_centres");
+        const bool haveCentres =
+            std::find(t.header.begin(), t.header.end(), "texel_centres") != t.header.end();
+        for (const char* h : {"b1", "b2", "b3", "b4", "expected_b1", "expected_b2", "expected_b3",
+                              "expected_b4", "max_error"})
+            shown.header.push_back(h);
+        if (!haveCentres) shown.header.push_back("texel_centres");
+        for (size_t i = 0; i < shown.rows.size(); ++i) {
+            for (double v : results[i]) shown.rows[i].push_back(num(v));
+            if (!haveCentres) shown.rows[i].push_back(texelCentres(boxes[i].x, boxes[i].y));
         }
-        writeCsv(a.out, shown, {"b1", "b2", "b3", "b4", "expected_b1", "expected_b2", "expected_b3",
-                                "expected_b4", "max_error"}, results);
+        writeCsv(a.out, shown, {}, {});
         return Ok;
     }
     for (const auto& m : out) results.push_back({m.x, m.y, m.z, m.w});
