@@ -51,10 +51,17 @@ int runTruth(const std::string& scenePath, const std::string& outDir, int sample
     o.cacheDir = cache == "none" ? fs::path() : cache.empty() ? defaultTruthCache() : fs::path(cache);
     const SceneTruth truth = computeSceneTruth(scene, lib, o);
     writeTruthFiles(truth, outDir);
-    // The filtered truth of the scene's own map and kernel: its raw map's b1 is the depth.
+    // The filtered truth of the scene's map size and kernel. The depth map is msm4's shadow pass
+    // (b1 = z; other techniques store warped or quantised values), as the study's.
     const int light = truth.ray.light;
-    const std::string suffix = light == plan.shadowLights.front() ? "" : "_light" + std::to_string(light);
-    const Image& raw = result.images.at("moments_raw" + suffix);
+    Scene depthScene = scene;
+    overrideTechnique(depthScene.shadow, Technique::Msm4);
+    depthScene.shadow.filter = FilterKind::None;
+    const PassPlan depthPlan = planPasses(depthScene);
+    const RenderResult depthRender = renderer.render(depthScene, depthPlan);
+    const std::string suffix =
+        light == depthPlan.shadowLights.front() ? "" : "_light" + std::to_string(light);
+    const Image& raw = depthRender.images.at("moments_raw" + suffix);
     Image depth(raw.width, raw.height, 1);
     for (size_t i = 0, n = size_t(raw.width) * raw.height; i < n; ++i)
         depth.pixels[i] = raw.pixels[i * size_t(raw.channels)];
