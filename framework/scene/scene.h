@@ -42,6 +42,8 @@ struct Light {
     float coneDegrees = 60.0f;    // spot: full opening angle of the cone (and of its shadow frustum)
     float extent = 10.0f;         // directional: half-width of the orthographic shadow frustum
     float size = 0.0f;            // world-space size of the emitter, for soft shadows (0: point)
+    glm::vec2 rectangle{0.0f};    // "size": [w, h]: a w × h rectangular emitter (size = max);
+                                  // else a disk of diameter `size` (truth/, docs/scenes.md)
     bool castsShadows = true;
 };
 
