@@ -41,6 +41,36 @@ TEST(ViewSettings, SwitchingTheFilterTypeKeepsEachTypesParameters) {
     EXPECT_EQ(s.scene().shadow.filter, FilterKind::None);
 }
 
+TEST(ViewSettings, SwitchingTheTechniqueKeepsEachTechniquesFilterAndParameters) {
+    EditableScene s = classic();  // msm4, gaussian radius 4
+    s.set("shadow.technique", std::string("vsm"));  // vsm takes a Gaussian: the filter stays
+    EXPECT_EQ(s.scene().shadow.technique, Technique::Vsm);
+    EXPECT_EQ(s.scene().shadow.filter, FilterKind::Gaussian);
+    EXPECT_EQ(s.scene().shadow.gaussianRadius, 4);
+    s.set("shadow.parameters.bleedReduction", std::string("0.3"));
+    s.set("shadow.technique", std::string("hard"));  // filter none only: the row's default
+    EXPECT_EQ(s.scene().shadow.technique, Technique::Hard);
+    EXPECT_EQ(s.scene().shadow.filter, FilterKind::None);
+    EXPECT_TRUE(s.scene().shadow.parameters.empty());  // vsm's parameter is not hard's
+    s.set("shadow.parameters.slopeBias", std::string("2.5"));
+    EXPECT_DOUBLE_EQ(s.scene().shadow.parameters.at("slopeBias"), 2.5);
+    s.set("shadow.technique", std::string("vsm"));
+    EXPECT_EQ(s.scene().shadow.filter, FilterKind::Gaussian);
+    EXPECT_DOUBLE_EQ(s.scene().shadow.parameters.at("bleedReduction"), 0.3);
+    EXPECT_EQ(s.scene().shadow.parameters.count("slopeBias"), 0u);
+    s.set("shadow.technique", std::string("hard"));
+    EXPECT_DOUBLE_EQ(s.scene().shadow.parameters.at("slopeBias"), 2.5);
+    // A name the table does not have: the loader's message, nothing changes.
+    try {
+        s.set("shadow.technique", std::string("vsmm"));
+        ADD_FAILURE() << "vsmm accepted";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("/shadow/technique: expected one of"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_EQ(s.scene().shadow.technique, Technique::Hard);
+}
+
 TEST(ViewSettings, ABadValueNamesFileKeyAndExpectationAndChangesNothing) {
     EditableScene s = classic();
     auto message = [&](const std::string& key, const std::string& value) -> std::string {

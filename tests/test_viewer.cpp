@@ -141,33 +141,37 @@ TEST(Viewer, PanelDrawsBesideTheImage) {
     EXPECT_GT(bright, 300) << "no text in the panel";
 }
 
-TEST(Viewer, ScriptedSettingReplansToWhatTheSceneFileWouldRender) {
+TEST(Viewer, ScriptedTechniqueAndFilterReplanToWhatTheSceneFileWouldRender) {
     if (!haveXvfb()) GTEST_SKIP() << "Xvfb not installed (./kit installs the xvfb package)";
     VirtualDisplay display;
     fs::path dir = test::tempDir("viewer_settings");
     const std::string scene = test::scenePath("classic").string();
-    // The same change, written into a copy of the scene file and rendered headless.
+    // The same changes, written into a copy of the scene file and rendered headless.
     nlohmann::json json;
     std::ifstream(scene) >> json;
+    json["shadow"]["technique"] = "vsm";
     json["shadow"]["filter"] = {{"type", "sat"}, {"kernel", 25}};
-    std::ofstream(dir / "classic_sat.json") << json.dump(2);
-    Image expected = renderPng((dir / "classic_sat.json").string(), dir / "render", "final");
+    std::ofstream(dir / "classic_vsm_sat.json") << json.dump(2);
+    Image expected = renderPng((dir / "classic_vsm_sat.json").string(), dir / "render", "final");
     Image before = renderPng(scene, dir / "render_before", "final");
 
     auto r = test::runCommand("DISPLAY=:" + std::to_string(display.number) + " " +
                               test::shadowlabBinary() + " view --scene " + scene +
-                              " --set shadow.filter.type=sat --set shadow.filter.kernel=25"
-                              " --frames 3 --screenshot " + (dir / "window.png").string());
+                              " --set shadow.technique=vsm --set shadow.filter.type=sat"
+                              " --set shadow.filter.kernel=25 --frames 4 --screenshot " +
+                              (dir / "window.png").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    // Each edit re-planned (one "plan:" line each); the SAT passes replaced the Gaussian ones.
-    const size_t first = r.output.find("plan:"), second = r.output.find("plan:", first + 1);
-    ASSERT_NE(second, std::string::npos) << r.output;
-    const std::string lastPlan = r.output.substr(second, r.output.find('\n', second) - second);
-    EXPECT_NE(lastPlan.find("sat-rows"), std::string::npos) << lastPlan;
-    EXPECT_EQ(lastPlan.find("gaussian"), std::string::npos) << lastPlan;
+    // Each edit re-planned, one "plan" line each: the technique first (classic's Gaussian
+    // stays, VSM takes one), then the SAT passes in place of the Gaussian ones.
+    std::vector<std::string> plans;
+    for (size_t at = r.output.find("plan ("); at != std::string::npos; at = r.output.find("plan (", at + 1))
+        plans.push_back(r.output.substr(at, r.output.find('\n', at) - at));
+    ASSERT_EQ(plans.size(), 3u) << r.output;
+    EXPECT_NE(plans[0].find("(vsm, gaussian): shadow gaussian-x gaussian-y"), std::string::npos) << plans[0];
+    EXPECT_NE(plans[2].find("(vsm, sat): shadow sat-rows sat-columns"), std::string::npos) << plans[2];
     Image window = readImage(dir / "window.png");
     EXPECT_LE(worstInImageCorner(window, expected), kOneStep);
-    // ... and the change shows: a 25-texel box is not the scene's radius-4 Gaussian.
+    // ... and the change shows: VSM over a 25-texel box is not MSM over a radius-4 Gaussian.
     long changed = 0;
     const int dy = window.height - before.height;
     for (int y = 0; y < before.height; ++y)

@@ -27,8 +27,8 @@
 namespace sl::cli {
 namespace {
 
-constexpr int kPanelWidth = 340;      // the panel column, right of the image
-constexpr int kPanelMinHeight = 640;  // room for the settings and a timing table
+constexpr int kPanelWidth = 380;      // the panel column, right of the image
+constexpr int kPanelMinHeight = 720;  // room for the settings and a timing table
 
 const char* kKeyImages[] = {"final", "shadow", "moments_raw", "moments_filtered"};
 
@@ -77,8 +77,10 @@ void applySetting(EditableScene& scene, ViewOptions& options, const std::string&
     applySetting(scene, options, key, value.is_discarded() ? nlohmann::json(text) : value);
 }
 
-std::string planLine(const PassPlan& plan) {
-    std::string line = "plan:";
+// "plan (vsm, sat): shadow sat-rows sat-columns lighting", printed on each re-plan.
+std::string planLine(const Scene& scene, const PassPlan& plan) {
+    std::string line = std::string("plan (") + toString(scene.shadow.technique) + ", " +
+                       toString(scene.shadow.filter) + "):";
     for (const auto& p : plan.passes) line += std::string(" ") + toString(p.kind);
     return line;
 }
@@ -148,7 +150,7 @@ int runView(const ViewArgs& a) {
             const Scene s = shownScene();
             plan = planPasses(s);
             result = renderer->render(s, plan);
-            if (frame > 0) std::cout << planLine(plan) << "\n";
+            if (frame > 0) std::cout << planLine(s, plan) << "\n";
             for (const auto& note : result.stubNotes) std::cout << "note: " << note << "\n";
             dirty = false;
         }

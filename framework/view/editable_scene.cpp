@@ -72,9 +72,45 @@ void EditableScene::set(const std::string& key, const Json& value) {
         if (!value.is_null()) edited[ptr] = value;
         else if (edited.contains(ptr)) edited[ptr.parent_pointer()].erase(ptr.back());
     }
+    if (key == "shadow.technique" && value.is_string())
+        return switchTechnique(std::move(edited), value.get<std::string>());
     Scene fresh = parseScene(edited.dump(2), path_);  // throws SceneError: nothing changes
     json_ = std::move(edited);
     scene_ = std::move(fresh);
+}
+
+// Tries, in order: the technique's own filter and parameters from before; the current filter
+// without the parameters (they belong to the old technique); the technique's defaults.
+void EditableScene::switchTechnique(Json edited, const std::string& to) {
+    auto part = [](const Json& doc, const char* key) {
+        return doc.contains("shadow") && doc["shadow"].contains(key) ? doc["shadow"][key] : Json();
+    };
+    auto with = [&](const Json& filter, const Json& parameters) {
+        Json candidate = edited;
+        Json& shadow = candidate["shadow"];
+        if (filter.is_null()) shadow.erase("filter"); else shadow["filter"] = filter;
+        if (parameters.is_null()) shadow.erase("parameters"); else shadow["parameters"] = parameters;
+        return candidate;
+    };
+    std::vector<Json> candidates;
+    if (auto known = shadowByTechnique_.find(to); known != shadowByTechnique_.end())
+        candidates.push_back(with(known->second["filter"], known->second["parameters"]));
+    candidates.push_back(with(part(json_, "filter"), Json()));
+    candidates.push_back(with(Json(), Json()));
+    std::string firstError;
+    for (Json& candidate : candidates) {
+        try {
+            Scene fresh = parseScene(candidate.dump(2), path_);
+            shadowByTechnique_[toString(scene_.shadow.technique)] =
+                Json{{"filter", part(json_, "filter")}, {"parameters", part(json_, "parameters")}};
+            json_ = std::move(candidate);
+            scene_ = std::move(fresh);
+            return;
+        } catch (const SceneError& e) {
+            if (firstError.empty()) firstError = e.what();
+        }
+    }
+    throw SceneError(firstError);
 }
 
 void EditableScene::set(const std::string& key, const std::string& value) {

@@ -24,6 +24,9 @@ public:
     // `key`: a dotted path into the scene JSON ("shadow.filter.radius", "lights.0.size").
     // Changing "shadow.filter.type" swaps the whole filter object: back to the one last used
     // with that type, or {"type": ...} (the loader's defaults) if it was never used.
+    // Changing "shadow.technique" likewise brings back that technique's filter and
+    // parameters as last used; a technique met for the first time keeps the filter if the
+    // loader accepts it there, else takes the technique's defaults for both.
     // A null `value` removes the key (the loader's default applies again).
     // Throws SceneError naming the key and keeps the scene as it was.
     void set(const std::string& key, const nlohmann::json& value);
@@ -31,10 +34,13 @@ public:
     void set(const std::string& key, const std::string& value);
 
 private:
+    void switchTechnique(nlohmann::json edited, const std::string& to);
+
     std::string path_;
     nlohmann::json json_;
     Scene scene_;
     std::map<std::string, nlohmann::json> filterByType_;  // filter objects met so far
+    std::map<std::string, nlohmann::json> shadowByTechnique_;  // {filter, parameters} met so far
 };
 
 // "key=value" -> {key, value}; throws SceneError when there is no '=' or no key.

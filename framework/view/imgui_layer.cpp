@@ -27,7 +27,7 @@ ImGuiLayer::ImGuiLayer(GlfwWindow& window) {
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
         throw BackendError("Dear ImGui: the OpenGL3 backend found no OpenGL 3+ entry points "
-                           "(apt-get install libgl1 libglx-mesa0)");
+                           "(apt-get install libgl1 libglx-mesa0; or run the viewer with --no-panels)");
     }
 }
 

@@ -18,9 +18,14 @@ bool setViewOption(ViewOptions& options, const std::string& key, const std::stri
                                      ", found \"" + value + "\"");
     };
     if (key == "view.image") {
+        // A further light's maps carry a suffix: moments_raw_light1.
         const auto& names = viewImageNames();
-        if (std::find(names.begin(), names.end(), value) == names.end())
-            throw bad("one of final, shadow, moments_raw, moments_filtered, sat");
+        const bool known = std::any_of(names.begin(), names.end(), [&](const std::string& n) {
+            return value == n || value.rfind(n + "_light", 0) == 0;
+        });
+        if (!known)
+            throw bad("one of final, shadow, moments_raw, moments_filtered, sat (a further "
+                      "light's maps: moments_raw_light1, ...)");
         options.image = value;
     } else if (key == "view.channel") {
         if (value == "all") options.channel = -1;

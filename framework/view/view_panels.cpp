@@ -1,9 +1,12 @@
 // view_panels: see view_panels.h.
 #include "view_panels.h"
 
+#include "technique.h"
+
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace sl {
@@ -28,12 +31,13 @@ bool combo(const char* label, const std::vector<std::string>& names, const std::
 
 void shadowSettings(const Scene& scene, std::vector<SettingEdit>& edits) {
     const ShadowEffect& fx = scene.shadow;
+    const TechniqueRow& row = techniqueRow(fx.technique);
     std::string chosen;
-    // The techniques the scene loader accepts (the ladder's table will list more).
-    const std::vector<std::string> techniques = {toString(Technique::Msm4)};
-    if (combo("technique", techniques, toString(fx.technique), chosen))
-        edits.push_back({"shadow.technique", chosen});
-    if (combo("filter", {"none", "gaussian", "sat"}, toString(fx.filter), chosen))
+    if (combo("technique", techniqueNames(), row.name, chosen)) edits.push_back({"shadow.technique", chosen});
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", row.summary.c_str());
+    std::vector<std::string> filters;  // the ones the technique allows
+    for (FilterKind f : row.filters) filters.push_back(toString(f));
+    if (combo("filter", filters, toString(fx.filter), chosen))
         edits.push_back({"shadow.filter.type", chosen});
     if (fx.filter == FilterKind::Gaussian) {
         int radius = fx.gaussianRadius;
@@ -60,23 +64,58 @@ void shadowSettings(const Scene& scene, std::vector<SettingEdit>& edits) {
         edits.push_back({"shadow.mapSize", std::stoi(chosen)});
 }
 
+// The technique's own parameters (bias modes, bleeding reduction, warp exponents, ...), each
+// a slider over the row's range; a value too small for a linear slider gets a logarithmic one.
+void techniqueParameters(const ShadowEffect& fx, std::vector<SettingEdit>& edits) {
+    const TechniqueRow& row = techniqueRow(fx.technique);
+    if (row.parameters.empty()) {
+        ImGui::TextDisabled("%s has no parameters", row.name.c_str());
+        return;
+    }
+    for (const TechniqueParameter& p : row.parameters) {
+        const std::string key = "shadow.parameters." + p.name;
+        const double value = techniqueParameter(fx, p.name);
+        if (p.integer) {
+            int v = int(std::lround(value));
+            if (ImGui::SliderInt(p.name.c_str(), &v, int(p.min), int(p.max))) edits.push_back({key, v});
+        } else {
+            float v = float(value);
+            const bool tiny = p.defaultValue > 0.0 && p.defaultValue < 0.01 * p.max;
+            if (ImGui::SliderFloat(p.name.c_str(), &v, float(p.min), float(p.max), tiny ? "%.2e" : "%.3f",
+                                   tiny ? ImGuiSliderFlags_Logarithmic : 0))
+                edits.push_back({key, v});
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (default %g)", p.meaning.c_str(), p.defaultValue);
+    }
+    if (ImGui::SmallButton("defaults")) edits.push_back({"shadow.parameters", nullptr});
+}
+
 void lightSettings(const Scene& scene, std::vector<SettingEdit>& edits) {
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
         ImGui::PushID(int(i));
         ImGui::Text("light %zu (%s)", i, toString(light.type));
-        float size = light.size;
-        if (ImGui::SliderFloat("size", &size, 0.0f, 2.0f, "%.3f"))
-            edits.push_back({"lights." + std::to_string(i) + ".size", size});
+        const std::string key = "lights." + std::to_string(i) + ".size";
+        if (light.rectangle.x > 0.0f) {  // a w × h rectangle ("size": [w, h])
+            float wh[2] = {light.rectangle.x, light.rectangle.y};
+            if (ImGui::SliderFloat2("size", wh, 0.001f, 2.0f, "%.3f"))
+                edits.push_back({key, {wh[0], wh[1]}});
+        } else {  // a disk of diameter size (0: a point)
+            float size = light.size;
+            if (ImGui::SliderFloat("size", &size, 0.0f, 2.0f, "%.3f")) edits.push_back({key, size});
+        }
         ImGui::PopID();
     }
 }
 
 void imageSettings(const RenderResult& result, const ViewOptions& options,
                    std::vector<SettingEdit>& edits) {
+    // The usual ones first, in their order; then any other the render made (further lights).
     std::vector<std::string> present;
     for (const auto& name : viewImageNames())
         if (result.images.count(name)) present.push_back(name);
+    for (const auto& [name, image] : result.images)
+        if (std::find(present.begin(), present.end(), name) == present.end()) present.push_back(name);
     std::string chosen;
     if (combo("image", present, options.image, chosen)) edits.push_back({"view.image", chosen});
     auto it = result.images.find(options.image);
@@ -114,6 +153,7 @@ void timingTable(const Scene& scene, const PassPlan& plan, const RenderResult& r
     ImGui::TableNextColumn();
     ImGui::Text("%.2f", std::accumulate(result.passMillis.begin(), result.passMillis.end(), 0.0));
     ImGui::EndTable();
+    ImGui::Text("shadow maps: %.1f MiB", double(plan.bytes()) / (1 << 20));
 }
 
 }  // namespace
@@ -127,9 +167,11 @@ std::vector<SettingEdit> drawPanels(const Scene& scene, const PassPlan& plan,
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
     ImGui::Begin("shadowlab", nullptr, flags);
-    ImGui::PushItemWidth(-90.0f);  // room for the labels
+    ImGui::PushItemWidth(-110.0f);  // room for the labels
     ImGui::TextUnformatted(scene.name.c_str());
     if (ImGui::CollapsingHeader("shadow", ImGuiTreeNodeFlags_DefaultOpen)) shadowSettings(scene, edits);
+    if (ImGui::CollapsingHeader("technique parameters", ImGuiTreeNodeFlags_DefaultOpen))
+        techniqueParameters(scene.shadow, edits);
     if (ImGui::CollapsingHeader("lights", ImGuiTreeNodeFlags_DefaultOpen)) lightSettings(scene, edits);
     if (ImGui::CollapsingHeader("image", ImGuiTreeNodeFlags_DefaultOpen))
         imageSettings(result, options, edits);

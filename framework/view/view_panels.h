@@ -1,5 +1,6 @@
 // view_panels: the viewer's Dear ImGui panels — the shadow settings (technique, filter and its
-// radius/kernel, α, depth bias, light sizes), the image shown, and a per-pass timing table.
+// radius/kernel, α, depth bias, the technique's own parameters such as its bias modes, light
+// sizes), the image shown, and a per-pass timing table.
 // The panels change nothing themselves: they return edits, which the viewer applies exactly
 // as it applies `--set key=value` (EditableScene for scene keys, ViewOptions for view.*).
 #pragma once
