@@ -64,18 +64,23 @@ std::set<std::string> studentKitDroppedTests(const fs::path& root) {
         if (text.find("oracles/") != std::string::npos || text.find("msm_exact") != std::string::npos ||
             text.find("submissions") != std::string::npos)
             dropped.insert(name);
-    static const std::regex include(R"re(#include\s+"([^"]+)")re");
+    // Quoted includes, one per line (a comment may quote `#include "` too).
+    static const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)")re");
+    std::map<std::string, std::vector<std::string>> includes;
+    for (const auto& [name, text] : files) {
+        std::istringstream in(text);
+        std::smatch m;
+        for (std::string line; std::getline(in, line);)
+            if (std::regex_search(line, m, include)) includes[name].push_back(m[1].str());
+    }
     for (bool grew = true; grew;) {  // a file that includes a dropped one is dropped too
         grew = false;
-        for (const auto& [name, text] : files) {
-            if (dropped.count(name)) continue;
-            for (std::sregex_iterator it(text.begin(), text.end(), include), end; it != end; ++it)
-                if (dropped.count((*it)[1].str())) {
+        for (const auto& [name, incs] : includes)
+            for (const auto& inc : incs)
+                if (!dropped.count(name) && dropped.count(inc)) {
                     dropped.insert(name);
                     grew = true;
-                    break;
                 }
-        }
     }
     std::set<std::string> rel;
     for (const auto& name : dropped) rel.insert("tests/" + name);
