@@ -95,7 +95,7 @@ inline std::string runDocumented(const fs::path& dir, std::string command, bool 
         command = "xvfb-run -a " + command;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    CommandResult r = runIn(dir, command, view ? 20 : 900, env);
+    CommandResult r = runIn(dir, command, view ? 8 : 900, env);
     std::printf("  %6.1f s  %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                 command.c_str());
     // A window that is still open when the time limit ends it ran without an error.
