@@ -75,6 +75,8 @@ inline CommandResult runIn(const fs::path& dir, const std::string& command, int 
 
 // How the kit's tests run a documented command line: as written, except
 //  - `./kit test` where `skipKitTest` (it is the command running this test),
+//  - `./kit deps --check` (it traces a whole build, minutes; .ci/run runs it after the suite),
+//  - `./kit study` (the full study, ~15 minutes; tests/test_study.cpp runs a tiny sweep),
 //  - benchmarks get `--size 64 --repeats 3` (a full-size benchmark is a minute of CPU),
 //  - `view` runs under xvfb-run (a virtual display), and a time limit closes its window.
 // Returns "" when it passed, else what went wrong (the command, its exit code, its output).
@@ -82,6 +84,14 @@ inline std::string runDocumented(const fs::path& dir, std::string command, bool 
                                  const std::string& env, std::string* skipped = nullptr) {
     if (command == "./kit test" && skipKitTest) {
         if (skipped) *skipped += command + ": skipped (it is the command running this test)\n";
+        return "";
+    }
+    if (command == "./kit deps --check") {
+        if (skipped) *skipped += command + ": skipped (.ci/run runs it after the test suite)\n";
+        return "";
+    }
+    if (command == "./kit study") {
+        if (skipped) *skipped += command + ": skipped (about 15 minutes; Study.* run a tiny sweep)\n";
         return "";
     }
     const bool view = command.find("shadowlab view") != std::string::npos;
