@@ -63,6 +63,19 @@ inline CommandResult runCommand(const std::string& command) {
     return r;
 }
 
+// Opens `page` in headless Chromium and saves a `width`×`height` screenshot as `shot`. The
+// flags are what this machine needs: no sandbox (root), and no background networking on a
+// closed network. Callers check `command -v chromium` first and skip without it.
+inline CommandResult screenshotPage(const fs::path& page, const fs::path& shot,
+                                    const fs::path& profile, int width, int height) {
+    return runCommand(
+        "timeout 60 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
+        "--disable-background-networking --disable-component-update --disable-sync "
+        "--user-data-dir=" + profile.string() + " --window-size=" + std::to_string(width) + "," +
+        std::to_string(height) + " --screenshot=" + shot.string() + " file://" +
+        fs::absolute(page).string());
+}
+
 // build/shadowlab, next to this test binary's folder (build/tests/); found at run time so that
 // no path is compiled in (ccache shares the objects between copies of the kit).
 inline std::string shadowlabBinary() {

@@ -87,11 +87,7 @@ TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
         GTEST_SKIP() << "chromium is not installed (apt-get install chromium): report not opened";
     const fs::path shot = test::tempDir("grader_report_shot") / "shot.png";
     const fs::path profile = test::tempDir("grader_report_profile");
-    auto r = test::runCommand(
-        "timeout 60 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-        "--disable-background-networking --disable-component-update --disable-sync "
-        "--user-data-dir=" + profile.string() + " --window-size=1200,2000 --screenshot=" +
-        shot.string() + " file://" + fs::absolute(page).string());
+    auto r = test::screenshotPage(page, shot, profile, 1200, 2000);
     ASSERT_TRUE(fs::exists(shot)) << r.output;
     OIIO::ImageBuf img(shot.string());
     ASSERT_TRUE(img.read()) << img.geterror();

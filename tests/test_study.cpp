@@ -126,11 +126,7 @@ TEST_F(Study, PlotsAndPageOpenInHeadlessChromium) {
         GTEST_SKIP() << "chromium is not installed (apt-get install chromium): page not opened";
     const fs::path shot = test::tempDir("study_shot") / "shot.png";
     const fs::path profile = test::tempDir("study_profile");
-    auto r = test::runCommand(
-        "timeout 60 chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run "
-        "--disable-background-networking --disable-component-update --disable-sync "
-        "--user-data-dir=" + profile.string() + " --window-size=1200,1600 --screenshot=" +
-        shot.string() + " file://" + fs::absolute(*dir_ / "index.html").string());
+    auto r = test::screenshotPage(*dir_ / "index.html", shot, profile, 1200, 1600);
     ASSERT_TRUE(fs::exists(shot)) << r.output;
     OIIO::ImageBuf img(shot.string());
     ASSERT_TRUE(img.read()) << img.geterror();
