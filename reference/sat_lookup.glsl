@@ -93,15 +93,24 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
     // The tiles the box overlaps (with a non-empty part): [tileLo, tileHi].
     ivec2 tileLo = ivec2(floor(lo / float(SAT_TILE)));
     ivec2 tileHi = ivec2(ceil(hi / float(SAT_TILE))) - 1;
+    // do-while, not for: llvmpipe runs a loop's body again, all lanes masked off, until no
+    // lane is left in it, and a for loop's last check comes at the top of a body that then
+    // runs for nothing (a whole tile part's reads: 2×2 tiles cost 7 parts, 3×3 cost 13).
+    // Every box overlaps at least one tile on each axis, so the test can come last.
     vec4 sum = vec4(0.0);
-    for (int ty = tileLo.y; ty <= tileHi.y; ++ty)
-        for (int tx = tileLo.x; tx <= tileHi.x; ++tx) {
+    int ty = tileLo.y;
+    do {
+        int tx = tileLo.x;
+        do {
             ivec2 origin = ivec2(tx, ty) * SAT_TILE;
             ivec2 tileSize = min(ivec2(SAT_TILE), size - origin);
             vec2 partLo = max(lo - vec2(origin), vec2(0.0));
             vec2 partHi = min(hi - vec2(origin), vec2(tileSize));
             if (partHi.x > partLo.x && partHi.y > partLo.y)
                 sum += satTileSum(sat, origin, tileSize, partLo, partHi);
-        }
+            ++tx;
+        } while (tx <= tileHi.x);
+        ++ty;
+    } while (ty <= tileHi.y);
     return sum / (extent.x * extent.y);
 }
