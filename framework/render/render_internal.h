@@ -1,0 +1,53 @@
+// Internal to the renderer's files (renderer.cpp, scene_passes.cpp, render_readback.cpp): the
+// per-light textures a render allocates and the helpers its stages share. Not a public API.
+#pragma once
+
+#include "gl_program.h"
+#include "gpu_resources.h"
+#include "light_view.h"
+#include "renderer.h"
+#include "scene_geometry.h"
+#include "technique.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sl::render_detail {
+
+// The textures of one shadowing light, by role (pass_plan.h), each a list of layers.
+struct ShadowMaps {
+    std::map<std::string, std::vector<Texture>> tex;
+    bool given = false;  // raw came from the caller: no shadow or filter pass runs
+    LightView view;
+    std::vector<const Texture*> forLighting;  // what lighting samples, in unit order
+    Texture& one(const std::string& role) { return tex.at(role).front(); }
+};
+
+// A framebuffer with `colors` as its draw buffers, in order, and `depth` as its depth.
+FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, const Texture& depth);
+
+// True if `out` holds the stub value -1 at a texel where `in` (same size) does not; with
+// `everywhere`, true if every texel of `out` holds it.
+bool stubOutput(const Image& out, const Image* in, bool everywhere = false);
+// Adds "<file>: <function>: not implemented yet ..." to the result's notes, once.
+void noteStub(const ShaderLibrary& library, RenderResult& result, const std::string& file,
+              const std::string& function);
+
+// Reads the maps back into `result`, and tells unimplemented stages apart from wrong ones by
+// the stub value (student stages only).
+void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
+              const PassPlan& plan, std::map<int, ShadowMaps>& maps, RenderResult& result);
+
+// The shadow pass (or the second-depth peel) of one light into its maps, with program `p`.
+void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
+                   const ShadowEffect& fx, bool studentStages, const SceneGeometry& geometry);
+
+// The lighting pass of camera `cam` into `color`/`shadow`/`depth` (created here), with program
+// `p` and every light's maps bound as the lighting samples them.
+void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
+                     const std::vector<LightView>& views, std::map<int, ShadowMaps>& maps,
+                     bool studentStages, const SceneGeometry& geometry, Texture& color,
+                     Texture& shadow, Texture& depth);
+
+}  // namespace sl::render_detail

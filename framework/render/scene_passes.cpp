@@ -1,0 +1,163 @@
+// Renderer's scene passes: the shadow pass that rasterises the casters into a light's maps,
+// and the lighting pass that shades a camera's view from every light's (filtered) maps.
+#include "render_internal.h"
+
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+namespace sl::render_detail {
+namespace {
+
+// A technique's parameters as the uniforms u<Name> (the shadow pass's warps, the lighting's).
+void setTechniqueParameters(const GlProgram& p, const ShadowEffect& fx) {
+    for (const auto& [name, value] : resolvedParameters(fx)) {
+        const std::string uniform = "u" + std::string(1, char(std::toupper(name[0]))) + name.substr(1);
+        p.set(uniform.c_str(), float(value));
+    }
+}
+
+// The uniforms of a framework technique's lighting permutation: its parameters as u<Name>,
+// the sampler units, the map size and the Gaussian weights (PCF uses the moment filter's).
+void setTechniqueUniforms(const GlProgram& p, const ShadowEffect& fx, int unitsUsed) {
+    constexpr int kMaxMaps = 16;  // SL_MAX_MAPS in shaders/techniques/common.glsl
+    if (unitsUsed > kMaxMaps)
+        throw std::runtime_error("the shadow maps need " + std::to_string(unitsUsed) +
+                                 " texture units; the lighting pass has " +
+                                 std::to_string(kMaxMaps));
+    std::vector<int> units(kMaxMaps);
+    for (int i = 0; i < kMaxMaps; ++i) units[i] = i;
+    p.setArray("uShadowMaps", units);
+    p.set("uMapTexels", glm::vec2(float(fx.mapSize)));
+    setTechniqueParameters(p, fx);
+    std::vector<float> w = Renderer::gaussianWeights(fx.gaussianRadius, fx.gaussianSigma);
+    p.set("uGaussianRadius", fx.gaussianRadius);
+    p.setArray("uGaussianWeights", w);
+}
+
+}  // namespace
+
+FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, const Texture& depth) {
+    GLuint id = 0;
+    gl::CreateFramebuffers(1, &id);
+    FramebufferHandle fb(id);
+    std::vector<GLenum> buffers;
+    for (size_t i = 0; i < colors.size(); ++i) {
+        gl::NamedFramebufferTexture(id, GLenum(GL_COLOR_ATTACHMENT0 + i), colors[i]->id(), 0);
+        buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+    }
+    gl::NamedFramebufferTexture(id, GL_DEPTH_ATTACHMENT, depth.id(), 0);
+    gl::NamedFramebufferDrawBuffers(id, GLsizei(buffers.size()), buffers.data());
+    if (gl::CheckNamedFramebufferStatus(id, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("framebuffer incomplete");
+    return fb;
+}
+
+void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
+                   const ShadowEffect& fx, bool studentStages, const SceneGeometry& geometry) {
+    const int n = fx.mapSize;
+    std::vector<const Texture*> colors;
+    if (second) colors.push_back(&m.one("second"));
+    else for (const Texture& t : m.tex.at("raw")) colors.push_back(&t);
+    FramebufferHandle fb = makeFramebuffer(colors, m.one("depth"));
+    const float farDepth = 1.0f;
+    for (size_t k = 0; k < colors.size(); ++k) {
+        // Relative depth 1 everywhere: nothing in front (msm4: moments (1, 1, 1, 1)).
+        const glm::vec4 c = second ? glm::vec4(1.0f) : clear[k];
+        gl::ClearNamedFramebufferfv(fb.id(), GL_COLOR, GLint(k), &c.x);
+    }
+    gl::ClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, fb.id());
+    gl::Viewport(0, 0, n, n);
+    p.use();
+    p.set("uViewProjection", m.view.viewProjection);
+    p.set("uLightEye", m.view.eye);
+    p.set("uLightForward", m.view.forward);
+    p.set("uDepthRange", m.view.depthRange);
+    if (!studentStages) setTechniqueParameters(p, fx);
+    if (second) {
+        const auto eps = float(techniqueParameter(fx, "peelEpsilon"));
+        p.set("uPeelEpsilon", eps);
+        p.set("uFirstDepth", 0);
+        gl::BindTextureUnit(0, m.one("raw").id());
+        m.forLighting.push_back(&m.one("second"));
+    }
+    geometry.draw(p, true, false);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
+                     const std::vector<LightView>& views, std::map<int, ShadowMaps>& maps,
+                     bool studentStages, const SceneGeometry& geometry, Texture& colorTarget,
+                     Texture& shadowTarget, Texture& depthTarget) {
+    const ShadowEffect& fx = scene.shadow;
+    colorTarget = Texture::create(cam.width, cam.height, GL_RGBA32F);
+    shadowTarget = Texture::create(cam.width, cam.height, GL_R32F);
+    depthTarget = Texture::create(cam.width, cam.height, GL_DEPTH_COMPONENT32F);
+    FramebufferHandle fb = makeFramebuffer({&colorTarget, &shadowTarget}, depthTarget);
+    const float bg[4] = {scene.background.x, scene.background.y, scene.background.z, 1};
+    const float zero[4] = {0, 0, 0, 0};
+    const float farDepth = 1.0f;
+    gl::ClearNamedFramebufferfv(fb.id(), GL_COLOR, 0, bg);
+    gl::ClearNamedFramebufferfv(fb.id(), GL_COLOR, 1, zero);
+    gl::ClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, fb.id());
+    gl::Viewport(0, 0, cam.width, cam.height);
+    p.use();
+    CameraView cv = computeCameraView(cam);
+    p.set("uViewProjection", cv.viewProjection);
+    p.set("uCameraPosition", cam.position);
+    p.set("uAmbient", scene.ambient);
+    p.set("uMomentBias", fx.momentBias);
+    p.set("uDepthBias", fx.depthBias);
+    p.set("uSatKernel", fx.satKernelTexels);
+    std::vector<glm::vec3> eye, forward, color;
+    std::vector<int> isSpot, mapIndex, units = {0, 1, 2, 3};
+    std::vector<float> cosHalfCone, lightSize, frustumScale;
+    std::vector<glm::mat4> viewProj;
+    std::vector<glm::vec2> range;
+    int unit = 0;
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& l = scene.lights[i];
+        eye.push_back(views[i].eye);
+        forward.push_back(views[i].forward);
+        color.push_back(l.color * l.intensity);
+        isSpot.push_back(l.type == LightType::Spot);
+        cosHalfCone.push_back(std::cos(glm::radians(l.coneDegrees * 0.5f)));
+        viewProj.push_back(views[i].viewProjection);
+        range.push_back(views[i].depthRange);
+        lightSize.push_back(l.size);
+        // Width of the shadow frustum: spot: × the depth; directional: as is.
+        frustumScale.push_back(l.type == LightType::Spot
+                                   ? 2.0f * std::tan(glm::radians(l.coneDegrees * 0.5f))
+                                   : 2.0f * l.extent);
+        auto it = maps.find(int(i));
+        if (it != maps.end()) {
+            mapIndex.push_back(unit);
+            for (const Texture* tex : it->second.forLighting)
+                gl::BindTextureUnit(GLuint(unit++), tex->id());
+        } else {
+            mapIndex.push_back(-1);
+        }
+    }
+    p.set("uLightCount", int(scene.lights.size()));
+    p.setArray("uLightEye", eye);
+    p.setArray("uLightForward", forward);
+    p.setArray("uLightColor", color);
+    p.setArray("uLightIsSpot", isSpot);
+    p.setArray("uLightCosHalfCone", cosHalfCone);
+    p.setArray("uLightShadowMap", mapIndex);
+    p.setArray("uLightViewProjection", viewProj);
+    p.setArray("uLightDepthRange", range);
+    if (studentStages) {
+        p.setArray("uShadowMaps", units);
+    } else {
+        setTechniqueUniforms(p, fx, unit);
+        p.setArray("uLightSize", lightSize);
+        p.setArray("uLightFrustumScale", frustumScale);
+    }
+    geometry.draw(p, false, true);
+    gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+}  // namespace sl::render_detail
