@@ -4,8 +4,11 @@
 // border texel many times over).
 #include "gl_test_support.h"
 #include "oracles/moment_oracles.h"
+#include "technique.h"
 
+#include <cmath>
 #include <random>
+#include <string>
 
 namespace sl {
 namespace {
@@ -68,6 +71,60 @@ TEST(NumericsGaussian, ConstantMapStaysConstantAtRadius64) {
     renderer.gaussianPass(a, b, 64, 0.0f, {1, 0});
     renderer.gaussianPass(b, c, 64, 0.0f, {0, 1});
     for (float v : c.read().pixels) ASSERT_NEAR(v, 0.7f, 2 * (2 * 64 + 3) * u);
+}
+
+}  // namespace sl
+
+namespace sl {
+
+// The framework's Gaussian (shaders/techniques/filter_gaussian.comp), which filters the maps of
+// the techniques other than msm4 in their own formats, against the reference's two passes on
+// the same raw map: the same sums in the same order, so float maps match bit for bit; the
+// 16-bit map rounds its intermediate and its result (each half a step of 1/65535).
+TEST(NumericsGaussian, FrameworkFilterEqualsReferenceInEveryMapFormat) {
+    test::sharedContext();
+    Renderer reference(test::library("reference"));
+    for (const char* name : {"vsm", "evsm4", "msm4-16bit"})
+        for (int radius : {3, 8, 16}) {
+            // An odd map size: partial work groups and T-texel runs at both edges.
+            Scene s = loadScene((test::root() / "scenes" / "ladder" / "light_bleeding.json").string());
+            overrideTechnique(s.shadow, techniqueFromName(name), {});
+            s.shadow.mapSize = 203;
+            s.shadow.filter = FilterKind::Gaussian;
+            s.shadow.gaussianRadius = radius;
+            s.shadow.gaussianSigma = 0.0f;
+            s.cameras[0].width = s.cameras[0].height = 32;
+            const RenderResult r = test::renderScene(s);
+            const Image& raw = r.images.at("moments_raw");
+            const Image& got = r.images.at("moments_filtered");
+            ASSERT_EQ(raw.width, 203);
+            const int w = raw.width, h = raw.height, ch = raw.channels;
+            Image wide(w, h, 4);
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x)
+                    for (int c = 0; c < ch; ++c) wide.at(x, y, c) = raw.at(x, y, c);
+            Texture a = Texture::create(w, h, GL_RGBA32F), b = Texture::create(w, h, GL_RGBA32F),
+                    c = Texture::create(w, h, GL_RGBA32F);
+            a.upload(wide);
+            reference.gaussianPass(a, b, radius, 0.0f, {1, 0});
+            reference.gaussianPass(b, c, radius, 0.0f, {0, 1});
+            const Image want = c.read();
+            const bool sixteen = std::string(name) == "msm4-16bit";
+            const double tol = sixteen ? 1.0 / 65535 + 4 * u : 0.0;
+            double worst = 0, spread = 0;
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x)
+                    for (int k = 0; k < ch; ++k) {
+                        const double d = std::abs(double(got.at(x, y, k)) - want.at(x, y, k));
+                        worst = std::max(worst, d);
+                        spread = std::max(spread, std::abs(double(want.at(x, y, k)) - raw.at(x, y, k)));
+                        ASSERT_LE(d, tol) << name << " r" << radius << " (" << x << ", " << y
+                                          << ") channel " << k;
+                    }
+            // The blur did something: a filter that copied its input would not pass unnoticed.
+            EXPECT_GT(spread, 1e-3) << name << " r" << radius;
+            std::printf("%s r=%d: max difference to the reference %.2e\n", name, radius, worst);
+        }
 }
 
 }  // namespace sl
