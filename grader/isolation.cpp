@@ -3,6 +3,8 @@
 // hidden `grade-worker` subcommand (fork + exec: a fresh process with no GL state inherited),
 // in its own process group (a timeout kills llvmpipe's threads and anything it started), with
 // RLIMIT_AS as the memory limit and PR_SET_PDEATHSIG so that it cannot outlive the grader.
+// A worker is forked without exec while the grader has one thread (ChildSpec::run): the same
+// fresh GL state, without re-linking the program's libraries.
 #include "isolation.h"
 
 #include <fcntl.h>
@@ -15,9 +17,12 @@
 extern char** environ;
 
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -32,34 +37,57 @@ struct Running {
     Clock::time_point start;
 };
 
-// The parent's environment, with Mesa's on-disk shader cache turned off.
-std::vector<std::string> childEnvironment() {
+// The cache settings every child gets, then the spec's own (`env`).
+std::vector<std::pair<std::string, std::string>> childSettings(const ChildSpec& spec) {
+    std::vector<std::pair<std::string, std::string>> set = {
+        {"MESA_SHADER_CACHE_DISABLE", "true"},
+        {"MESA_GLSL_CACHE_DISABLE", "true"}};  // Mesa before 22.1
+    for (const auto& kv : spec.env) {
+        std::erase_if(set, [&](const auto& s) { return s.first == kv.first; });
+        set.push_back(kv);
+    }
+    return set;
+}
+
+// The parent's environment with the child's settings (for execve).
+std::vector<std::string> childEnvironment(const ChildSpec& spec) {
+    const auto settings = childSettings(spec);
     std::vector<std::string> env;
     for (char** e = environ; e && *e; ++e) {
         const std::string_view v(*e);
-        if (v.starts_with("MESA_SHADER_CACHE_DISABLE=") || v.starts_with("MESA_GLSL_CACHE_DISABLE="))
-            continue;
-        env.emplace_back(v);
+        bool overridden = false;
+        for (const auto& [name, value] : settings)
+            overridden = overridden || v.starts_with(name + "=");
+        if (!overridden) env.emplace_back(v);
     }
-    env.push_back("MESA_SHADER_CACHE_DISABLE=true");
-    env.push_back("MESA_GLSL_CACHE_DISABLE=true");  // Mesa before 22.1
+    for (const auto& [name, value] : settings) env.push_back(name + "=" + value);
     return env;
 }
 
-pid_t startChild(const ChildSpec& spec, const Limits& limits, const std::string& exe) {
-    std::vector<std::string> env = childEnvironment();
-    std::vector<char*> cenv;
-    for (auto& e : env) cenv.push_back(e.data());
-    cenv.push_back(nullptr);
-    std::vector<std::string> argv = {exe};
-    argv.insert(argv.end(), spec.args.begin(), spec.args.end());
-    std::vector<char*> cargv;
-    for (auto& a : argv) cargv.push_back(a.data());
-    cargv.push_back(nullptr);
-    const std::string log = spec.logPath.string();
-    pid_t pid = ::fork();
-    if (pid != 0) return pid;
-    // Child: only async-signal-safe calls until exec.
+// The threads of this process, by id.
+std::set<std::string> threadIds() {
+    std::set<std::string> ids;
+    std::error_code ec;
+    for (auto it = std::filesystem::directory_iterator("/proc/self/task", ec);
+         !ec && it != std::filesystem::directory_iterator(); it.increment(ec))
+        ids.insert(it->path().filename().string());
+    return ec ? std::set<std::string>{} : ids;
+}
+
+// The threads running before main(): log4cplus, which the image libraries link, starts an idle
+// pool while it loads. A static of the executable, so initialised after every library's.
+const std::set<std::string> kStartupThreads = threadIds();
+
+// fork without exec is safe while no thread but the main one and those idle library threads
+// (which a worker never calls) exists: any other (a GL context's, an image library's pool)
+// could hold a lock the child needs, locked forever there.
+bool forkIsSafe() {
+    const auto now = threadIds();
+    return !now.empty() && now == kStartupThreads;
+}
+
+// In a new child, before its work: own process group, dies with the grader, limits, log.
+void setUpChild(const Limits& limits, const char* log) {
     ::setpgid(0, 0);
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (limits.memoryMb > 0) {
@@ -69,12 +97,48 @@ pid_t startChild(const ChildSpec& spec, const Limits& limits, const std::string&
     }
     rlimit core{0, 0};  // a crashing shader compiler must not leave core files behind
     ::setrlimit(RLIMIT_CORE, &core);
-    int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    int fd = ::open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
         ::dup2(fd, 1);
         ::dup2(fd, 2);
         ::close(fd);
     }
+}
+
+pid_t startChild(const ChildSpec& spec, const Limits& limits, const std::string& exe) {
+    const std::string log = spec.logPath.string();
+    if (spec.run && forkIsSafe()) {
+        // Buffered output would be written twice (by the parent and by the child).
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        pid_t pid = ::fork();
+        if (pid != 0) return pid;
+        setUpChild(limits, log.c_str());
+        for (const auto& [name, value] : childSettings(spec)) ::setenv(name.c_str(), value.c_str(), 1);
+        int code = 1;
+        try {
+            code = spec.run();
+        } catch (...) {
+        }
+        std::cout.flush();
+        std::cerr.flush();
+        std::fflush(nullptr);
+        ::_exit(code);  // not the grader's exit handlers or destructors
+    }
+    std::vector<std::string> env = childEnvironment(spec);
+    std::vector<char*> cenv;
+    for (auto& e : env) cenv.push_back(e.data());
+    cenv.push_back(nullptr);
+    std::vector<std::string> argv = {exe};
+    argv.insert(argv.end(), spec.args.begin(), spec.args.end());
+    std::vector<char*> cargv;
+    for (auto& a : argv) cargv.push_back(a.data());
+    cargv.push_back(nullptr);
+    pid_t pid = ::fork();
+    if (pid != 0) return pid;
+    // Child of a threaded process: only async-signal-safe calls until exec.
+    setUpChild(limits, log.c_str());
     // /proc/self/exe, not its path: the build may have replaced the file since we started.
     ::execve("/proc/self/exe", cargv.data(), cenv.data());
     ::execve(cargv[0], cargv.data(), cenv.data());

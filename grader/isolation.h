@@ -19,6 +19,13 @@ struct ChildSpec {
     // (text, replacement) pairs applied to the log: the grader's own paths never reach a
     // student's message ("/work/kit/shaders/x" -> "shaders/x").
     std::vector<std::pair<std::string, std::string>> scrub;
+    // Extra environment (name, value), set after the shader-cache defaults below.
+    std::vector<std::pair<std::string, std::string>> env;
+    // The child's work in this process, returning its exit code: run after fork without exec
+    // while the grader has started no thread (exec re-links ~270 shared libraries per child, a
+    // quarter of a grade's CPU). With threads of its own (a GL context, an image library's
+    // pool) fork is unsafe: then `args` are exec'd as before. Empty: always exec.
+    std::function<int()> run;
 };
 
 struct ChildResult {
@@ -38,7 +45,8 @@ struct Limits {
 };
 
 // Every child runs with MESA_SHADER_CACHE_DISABLE=true (Mesa's cache is the only file a
-// render would write outside OUT) and its own process group.
+// render would write outside OUT) unless its `env` turns the cache on in a folder of its own
+// (a grade's workers share one inside OUT), and in its own process group.
 
 // The path of the running executable (/proc/self/exe): workers are this binary.
 std::string selfExecutable();

@@ -4,6 +4,7 @@
 
 #include "paths.h"
 #include "shader_source.h"
+#include "worker.h"
 
 #include <unistd.h>
 
@@ -23,6 +24,15 @@ bool haveReference() {
     return true;
 }
 
+std::vector<std::pair<std::string, std::string>> shaderCacheEnvironment(const GradeOptions& o) {
+    const fs::path cache = workDir(o) / "shader-cache";
+    std::error_code ec;
+    fs::create_directories(cache, ec);
+    if (ec) return {};  // the cache stays off
+    return {{"MESA_SHADER_CACHE_DISABLE", "false"}, {"MESA_GLSL_CACHE_DISABLE", "false"},
+            {"MESA_SHADER_CACHE_DIR", cache.string()}, {"MESA_GLSL_CACHE_DIR", cache.string()}};
+}
+
 ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std::string& stage,
                      const fs::path& input, const fs::path& out) {
     std::vector<std::string> args = {"--backend", o.backend, "grade-worker",
@@ -36,6 +46,16 @@ ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std:
     spec.args = args;
     spec.logPath = out / "log.txt";
     spec.group = stage;
+    WorkerArgs w;
+    w.scene = scene.path.string();
+    w.stage = stage;
+    w.submission = (workDir(o) / "submission").string();
+    w.reference = haveReference() ? (repoRoot() / "reference").string() : "";
+    w.input = input.string();
+    w.out = out.string();
+    w.backend = o.backend;
+    spec.run = [w] { return workerMain(w); };
+    spec.env = shaderCacheEnvironment(o);
     // Most specific first: the staged copies, then OUT, then the kit and the scene's folder.
     auto dir = [](const fs::path& p) {
         std::error_code ec;

@@ -14,6 +14,7 @@
 
 #include "grader.h"
 
+#include "cli_commands.h"
 #include "depth_ladder.h"
 #include "gl_context.h"
 #include "msm_robustness.h"
@@ -30,6 +31,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 
 namespace sl::grader {
 namespace {
@@ -51,9 +53,9 @@ ShaderLibrary makeLibrary(const WorkerArgs& a) {
 RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered) {
     scene.shadow.filter = FilterKind::None;
     const PassPlan plan = planPasses(scene);
-    std::map<int, Image> moments;
-    if (!plan.shadowLights.empty()) moments[plan.shadowLights.front()] = filtered;
-    return renderer.render(scene, plan, &moments);
+    RenderInputs inputs;
+    if (!plan.shadowLights.empty()) inputs.filteredMoments[plan.shadowLights.front()] = filtered;
+    return renderer.render(scene, plan, inputs);
 }
 
 void runWorker(const WorkerArgs& a) {
@@ -162,6 +164,29 @@ void runWorker(const WorkerArgs& a) {
                         {"renderer", info.renderer},
                         {"mesaVersion", info.mesaVersion}};
     std::ofstream(fs::path(a.out) / "worker.json") << j.dump(2) << "\n";
+}
+
+int workerMain(const WorkerArgs& a) {
+    // The same messages and codes as main() gives an exec'd grade-worker (framework/cli/main.cpp).
+    try {
+        runWorker(a);
+        return cli::Ok;
+    } catch (const SceneError& e) {
+        std::cerr << "scene error: " << e.what() << "\n";
+        return cli::BadInput;
+    } catch (const ShaderError& e) {
+        std::cerr << "shader error:\n" << e.what() << "\n";
+        return cli::ShaderFailed;
+    } catch (const BackendError& e) {
+        std::cerr << "no OpenGL: " << e.what() << "\n";
+        return cli::NoBackend;
+    } catch (const std::exception& e) {
+        std::cerr << "error: " << e.what() << "\n";
+        return cli::Failed;
+    } catch (...) {
+        std::cerr << "error: unknown\n";
+        return cli::Failed;
+    }
 }
 
 }  // namespace sl::grader

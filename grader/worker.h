@@ -23,6 +23,11 @@ struct WorkerArgs {
 // command line turns it into exit code 3 and the mapped log on stderr).
 void runWorker(const WorkerArgs& args);
 
+// runWorker as a process's whole work: the exit code and stderr text of `shadowlab
+// grade-worker` (0; 2 scene error; 3 "shader error:" and the mapped log; 4 no OpenGL; 1 other).
+// A child forked without exec runs this (isolation.h).
+int workerMain(const WorkerArgs& args);
+
 // Lighting only, with `filtered` standing in for the first shadowing light's filtered moments
 // (bilinear, whatever the scene's filter): the msm stage, for the student and the reference.
 RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered);
