@@ -12,6 +12,10 @@
 #include <iostream>
 #include <set>
 
+namespace sl::cli {
+void addReportCommand(CLI::App& app, Context& ctx);  // report (cli_report.cpp)
+}
+
 namespace {
 
 // Subcommands that render nothing (no --backend there).
@@ -32,6 +36,7 @@ int main(int argc, char** argv) {
     sl::cli::Context ctx;
     addBackendOption(app, ctx.backend);
     sl::cli::addRenderCommands(app, ctx);
+    sl::cli::addReportCommand(app, ctx);
     sl::cli::addViewCommand(app, ctx);
     sl::cli::addProbeCommand(app, ctx);
     sl::cli::addStudyCommands(app, ctx);

@@ -1,0 +1,16 @@
+// scene_size: a scene rendered smaller for a quick look (`shadowlab report --size`, and the
+// demo's comparison sheets): its cameras, its shadow map and its filter widths scale together,
+// so that shadows keep their softness in world units and a small image looks like a big one.
+#pragma once
+
+#include "scene.h"
+
+namespace sl::cli {
+
+// Scales every camera so that the first one is `size` pixels wide (aspect kept), the shadow
+// map by the same factor (at least 64 texels), the SAT box and the Gaussian radius and σ by the
+// map's factor (at least one texel). The scene's probes name pixels of the full-size image, so
+// they are dropped. A `size` equal to the first camera's width changes nothing.
+void scaleScene(Scene& scene, int size);
+
+}  // namespace sl::cli
