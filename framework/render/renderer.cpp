@@ -16,13 +16,42 @@ GLenum samplerFilter(const std::string& role) {
     return role == "raw" || role == "filtered" || role == "second" ? GL_LINEAR : GL_NEAREST;
 }
 
+// Uploads the caller's raw map (role "raw": its layers; "second": the peeled map) into the
+// textures just allocated for planned texture `t`, after checking that it fits them.
+void uploadRawMap(const RawShadowMap& given, const PlannedTexture& t, std::vector<Texture>& layers) {
+    std::vector<const Image*> images;
+    if (t.role == "raw")
+        for (const Image& i : given.raw) images.push_back(&i);
+    else
+        images.push_back(&given.second);
+    auto describe = [](int w, int h, int c) {
+        return std::to_string(w) + "x" + std::to_string(h) + "x" + std::to_string(c);
+    };
+    if (images.size() != layers.size())
+        throw std::invalid_argument("RenderInputs::rawMaps: light " + std::to_string(t.light) +
+                                    " role " + t.role + ": expected " +
+                                    std::to_string(layers.size()) + " layer(s), found " +
+                                    std::to_string(images.size()));
+    for (size_t k = 0; k < layers.size(); ++k) {
+        const Image& i = *images[k];
+        try {
+            layers[k].upload(i);  // checks the size and the format's channel count
+        } catch (const std::invalid_argument&) {
+            throw std::invalid_argument("RenderInputs::rawMaps: light " + std::to_string(t.light) +
+                                        " role " + t.role + ": expected a " + t.format + " map " +
+                                        std::to_string(t.width) + "x" + std::to_string(t.height) +
+                                        ", found " + describe(i.width, i.height, i.channels));
+        }
+    }
+}
+
 }  // namespace
 
 Renderer::Renderer(ShaderLibrary library) : library_(std::move(library)) {}
 Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
-                              const std::map<int, Image>* moments) {
+                              const RenderInputs& inputs) {
     if (scene.lights.size() > 4) throw std::runtime_error(scene.path + ": at most 4 lights");
     RenderResult result;
     SceneGeometry geometry(scene);
@@ -39,19 +68,28 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     for (const PlannedTexture& t : plan.textures) {
         if (t.light < 0) continue;
         ShadowMaps& m = maps[t.light];
-        const Image* given = moments && moments->count(t.light) ? &moments->at(t.light) : nullptr;
         auto& layers = m.tex[t.role];
-        if (t.role == "raw" && given) {
-            layers.push_back(Texture::create(given->width, given->height, GL_RGBA32F, GL_LINEAR));
-            layers.back().upload(*given);
+        const auto filtered = inputs.filteredMoments.find(t.light);
+        if (t.role == "raw" && filtered != inputs.filteredMoments.end()) {
+            const Image& given = filtered->second;
+            layers.push_back(Texture::create(given.width, given.height, GL_RGBA32F, GL_LINEAR));
+            layers.back().upload(given);
             m.given = true;
             continue;
         }
         for (int k = 0; k < t.layers; ++k)
             layers.push_back(Texture::create(t.width, t.height, t.glFormat, samplerFilter(t.role)));
+        const auto raw = inputs.rawMaps.find(t.light);
+        if (raw != inputs.rawMaps.end() && (t.role == "raw" || t.role == "second")) {
+            uploadRawMap(raw->second, t, layers);
+            m.givenRaw = true;
+        }
     }
-    for (auto& [li, m] : maps)
+    for (auto& [li, m] : maps) {
         for (auto& t : m.tex.at("raw")) m.forLighting.push_back(&t);
+        // A given second-depth map: what its (skipped) peel pass would have added.
+        if (m.givenRaw && m.tex.count("second")) m.forLighting.push_back(&m.one("second"));
+    }
     const MapLayout layout = mapLayout(fx);
     const std::vector<glm::vec4> clear = shadowClearValues(fx);
 
@@ -69,7 +107,10 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     for (const PlannedPass& pass : plan.passes) {
         const auto start = std::chrono::steady_clock::now();
         ShadowMaps* m = pass.light >= 0 ? &maps.at(pass.light) : nullptr;
-        if (m && m->given) {  // the caller's moments stand in for this light's passes
+        const bool shadowPass = pass.kind == PassKind::Shadow || pass.kind == PassKind::ShadowSecond;
+        // The caller's filtered moments stand in for all of this light's passes, its raw map
+        // for its shadow passes.
+        if (m && (m->given || (m->givenRaw && shadowPass))) {
             result.passMillis.push_back(0.0);
             continue;
         }
@@ -143,6 +184,13 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 .count());
     }
     readBack(library_, row, fx, plan, maps, result);
+    if (inputs.keepRawMaps)
+        for (auto& [li, m] : maps) {
+            if (m.given) continue;  // a filtered map stood in: there is no raw map
+            RawShadowMap& out = result.rawMaps[li];
+            for (const Texture& t : m.tex.at("raw")) out.raw.push_back(t.read());
+            if (m.tex.count("second")) out.second = m.one("second").read();
+        }
     for (const auto& [ci, t] : targets) {
         const std::string suffix = ci == 0 ? "" : "_" + scene.cameras[ci].name;
         Image shadow = t.shadow.read();

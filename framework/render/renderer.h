@@ -18,6 +18,37 @@
 
 namespace sl {
 
+// What one light's shadow pass(es) wrote, in the map's own format: the plan's "raw" role (the
+// technique's map: R32F depth for hard/pcf/pcss/second-depth, RG32F (z, z²) for vsm, RGBA32F
+// moments for msm4/msm4-hausdorff/evsm4/msm-soft, RGBA16 for msm4-16bit, several RGBA32F
+// layers for csm, ...) and, for second-depth, the peeled "second" map. Image channels follow
+// the format (Texture::read); RGBA16 values are read as floats k/65535 and upload back to
+// the same k, so a map read back and fed in again is bit-identical.
+struct RawShadowMap {
+    std::vector<Image> raw;  // one image per layer of the "raw" role (1 but for csm)
+    Image second;            // second-depth only; empty (0 × 0) for every other technique
+};
+
+// Maps a render takes from the caller instead of making them, by index into Scene::lights.
+struct RenderInputs {
+    // An already FILTERED moment map (RGBA32F, the plan's map size): that light's shadow and
+    // filter passes are all skipped and lighting samples this map bilinearly, so give the
+    // scene the filter `none`. The grader's msm stage feeds the reference's filtered moments
+    // to a student's msm.glsl this way.
+    std::map<int, Image> filteredMoments;
+    // An already RENDERED raw map (RenderResult::rawMaps of an earlier render): that light's
+    // shadow pass and second-depth peel are skipped (their passMillis are 0), and its filter
+    // passes and lighting run as planned. The map must come from a scene with the same
+    // geometry, light, map size and technique format (same `mapLayout`): the shadow map of a
+    // (scene, light, size, format) is then rendered once and shared by every technique and
+    // filter that reads that format (issue 9's sweep). Sizes, layers and channels are
+    // checked (std::invalid_argument); that it is the same scene is the caller's promise.
+    std::map<int, RawShadowMap> rawMaps;
+    // Fill RenderResult::rawMaps with every shadowing light's raw map (one extra read-back
+    // per light; off by default because a 2048² RGBA32F map is 64 MiB).
+    bool keepRawMaps = false;
+};
+
 struct RenderResult {
     // First shadowing light: "moments_raw", "moments_filtered", and "sat" for a SAT filter;
     // further lights add the suffix "_light<i>". First camera: "shadow" (G) and "final"
@@ -25,6 +56,9 @@ struct RenderResult {
     std::map<std::string, Image> images;
     std::vector<double> passMillis;     // one per planned pass (glFinish-bounded wall time)
     std::vector<std::string> stubNotes; // "student/msm.glsl: momentShadowIntensity: not implemented yet ..."
+    // With RenderInputs::keepRawMaps: each shadowing light's raw map, to feed to later renders
+    // through RenderInputs::rawMaps (given maps come back as they went in).
+    std::map<int, RawShadowMap> rawMaps;
 };
 
 class Renderer {
@@ -32,12 +66,14 @@ public:
     explicit Renderer(ShaderLibrary library);
     ~Renderer();
 
-    // `moments`: light index -> a moment map to light with instead of rendering and filtering
-    // that light's shadow map (its shadow and filter passes are skipped; the map is sampled
-    // bilinearly, so give the scene filter `none`). The grader's msm stage uses it to feed the
-    // reference's filtered moments to a student's msm.glsl.
+    // Runs `plan` (planPasses(scene)) and reads back its images. `inputs`: maps to use
+    // instead of rendering them (see RenderInputs). Sharing one shadow map between renders:
+    //   RenderInputs keep;  keep.keepRawMaps = true;
+    //   RenderResult first = renderer.render(scene, planPasses(scene), keep);
+    //   RenderInputs shared;  shared.rawMaps = first.rawMaps;
+    //   RenderResult other = renderer.render(sceneWithAnotherFilter, planPasses(...), shared);
     RenderResult render(const Scene& scene, const PassPlan& plan,
-                        const std::map<int, Image>* moments = nullptr);
+                        const RenderInputs& inputs = {});
 
     // One dispatch each, src -> dst (both RGBA32F, same size). Compile on first use.
     void copyPass(const Texture& src, const Texture& dst);
