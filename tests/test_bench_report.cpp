@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+
 namespace sl {
 namespace {
 
@@ -14,6 +16,47 @@ const BenchRow* findRow(const BenchReport& report, const std::string& name) {
     for (const auto& row : report.rows)
         if (row.name == name) return &row;
     return nullptr;
+}
+
+// wide_blur shrunk to a 64² map seen by a 32² camera: the lighting row in milliseconds.
+fs::path tinySatScene() {
+    auto scene = nlohmann::json::parse(std::ifstream(test::scenePath("wide_blur")));
+    scene["shadow"]["mapSize"] = 64;
+    scene["shadow"]["filter"]["kernel"] = 5.5;
+    scene["camera"]["width"] = 32;
+    scene["camera"]["height"] = 32;
+    scene.erase("expect");
+    const fs::path path = test::tempDir("bench_lighting") / "tiny_sat.json";
+    std::ofstream(path) << scene.dump(1);
+    return path;
+}
+
+TEST(FilterBenchmark, SatLookupLightingRowSaysNotImplementedForAStubbedLookup) {
+    test::sharedContext();
+    const fs::path scene = tinySatScene();
+    // The reference's sat.comp with the student's stubbed sat_lookup.glsl: the table is
+    // fine, the lookup is not, and the lighting row must not be timed against its goal.
+    Renderer mixed(ShaderLibrary::mixed(resolveSolution("reference"),
+                                        {{"sat_lookup.glsl", resolveSolution("student")}},
+                                        test::root()));
+    BenchReport report = runFilterBenchmark(mixed, BenchOptions{32, 3, scene.string()});
+    const BenchRow* row = findRow(report, "sat lookup, lighting pass (tiny_sat)");
+    ASSERT_NE(row, nullptr) << formatBenchReport(report);
+    EXPECT_FALSE(row->implemented);
+    EXPECT_EQ(benchVerdict(*row), "not implemented");
+    EXPECT_TRUE(findRow(report, "sat, rows + columns")->implemented);
+
+    // The reference: timed, against the bilinear fetch, with the 1.2 goal and its spread.
+    Renderer reference(test::library("reference"));
+    report = runFilterBenchmark(reference, BenchOptions{32, 3, scene.string()});
+    row = findRow(report, "sat lookup, lighting pass (tiny_sat)");
+    ASSERT_NE(row, nullptr) << formatBenchReport(report);
+    EXPECT_TRUE(row->implemented);
+    EXPECT_EQ(row->baseline, "bilinear fetch");
+    EXPECT_DOUBLE_EQ(row->goal, 1.2);
+    EXPECT_LE(row->ratioMin, row->ratio);
+    EXPECT_LE(row->ratio, row->ratioMax);
+    EXPECT_NE(benchVerdict(*row), "not implemented");
 }
 
 TEST(FilterBenchmark, StubStagesAreNotImplementedAndGetNoVerdict) {
