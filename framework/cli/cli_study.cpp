@@ -126,7 +126,7 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
         std::string scene, techniques, sizes = "256,512,1024,2048", radii = "1,2,4,8,16",
                     filters = "gaussian,sat", solution = "reference", out, cache;
         int repeats = 3, samples = 1296, image = 0;
-        bool explain = false, noProgress = false;
+        bool explain = false, noProgress = false, noShare = false;
     };
     auto s = std::make_shared<StudyArgs>();
     study->add_option("--scene", s->scene, "scene JSON file")->required();
@@ -143,6 +143,9 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     study->add_option("--out", s->out, "output folder (resumes the study.csv found there)")->required();
     study->add_flag("--explain", s->explain, "print each row's plan, times and what it reused");
     study->add_flag("--no-progress", s->noProgress, "no progress bar");
+    study->add_flag("--no-share", s->noShare,
+                    "every row renders its own shadow map (default: rows whose shadow pass would "
+                    "draw the same map share one, rendered once)");
     study->callback([s, &ctx] {
         StudyOptions o;
         o.scene = s->scene;
@@ -158,6 +161,7 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
         o.cacheDir = s->cache == "none" ? fs::path() : s->cache.empty() ? defaultTruthCache() : fs::path(s->cache);
         o.explain = s->explain;
         o.progress = !s->noProgress;
+        o.shareMaps = !s->noShare;
         auto context = createContext(parseBackendKind(ctx.backend));
         o.headline = machineLine(context->info());
         const StudySummary sum = runStudy(o, std::cout);

@@ -7,6 +7,8 @@
 #include "image_io.h"
 #include "pass_plan.h"
 #include "paths.h"
+#include "raw_map_cache.h"
+#include "raw_map_key.h"
 #include "renderer.h"
 #include "scene_truth.h"
 #include "study_report.h"
@@ -17,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <iostream>
 #include <ostream>
 #include <set>
@@ -121,6 +124,35 @@ private:
     Texture src_, dst_;
 };
 
+// The scene a combination renders: the base scene with the row's map, filter and technique.
+Scene rowScene(const Scene& base, const Combination& c) {
+    Scene s = base;
+    s.shadow.mapSize = c.size;
+    s.shadow.filter = c.filter;
+    s.shadow.gaussianRadius = std::max(c.radius, 1);
+    s.shadow.gaussianSigma = 0.0f;  // r / 2
+    s.shadow.satKernelTexels = float(2 * c.radius + 1);
+    overrideTechnique(s.shadow, c.technique, c.params);
+    s.shadow.filter = c.filter;
+    if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
+    return s;
+}
+
+PassPlan rowPlan(const Scene& s) {
+    // No SAT resolve: it makes msm4's filtered moments for output only, and no frame needs it.
+    PlanOptions planOptions;
+    planOptions.resolveSat = false;
+    return planPasses(s, planOptions);
+}
+
+// The first 16 hex digits of the SHA-256 of an image's floats: equal digests, equal images.
+std::string imageDigest(const Image& img) {
+    const std::string bytes(reinterpret_cast<const char*>(img.pixels.data()),
+                            img.pixels.size() * sizeof(float));
+    return sha256Hex(std::to_string(img.width) + "x" + std::to_string(img.height) + "x" +
+                     std::to_string(img.channels) + "\n" + bytes).substr(0, 16);
+}
+
 void progressBar(std::ostream& err, int done, int total, const std::string& what, double eta) {
     const int width = 28, filled = total ? done * width / total : width;
     std::string bar(size_t(filled), '#');
@@ -193,18 +225,42 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     const std::vector<Combination> combos = combinations(o, notes);
     summary.notes.insert(summary.notes.end(), notes.begin(), notes.end());
     summary.planned = int(combos.size());
+
+    // Which rows share a raw shadow map (raw_map_key.h): count every row still to run per key,
+    // so that the first renders the map and keeps it for the others, and the last drops it.
+    struct Planned {
+        StudyRow row;  // the combination's columns, filled in below
+        RawMapKey map;
+    };
+    std::vector<Planned> rows;
+    RawMapCache shared;
+    for (const Combination& c : combos) {
+        Planned p;
+        p.row.scene = base.name;
+        p.row.solution = o.solution;
+        p.row.spec = c.spec;
+        p.row.technique = techniqueRow(c.technique).name;
+        p.row.filter = toString(c.filter);
+        p.row.radius = c.radius;
+        p.row.mapSize = c.size;
+        if (!done.count(p.row.key())) {
+            const Scene s = rowScene(base, c);
+            const PassPlan plan = rowPlan(s);
+            if (plan.shadowLights.empty()) throw std::runtime_error(base.path + ": no light casts shadows");
+            p.map = rawMapKey(s, plan, plan.shadowLights.front(), solution.library(), truth.hash);
+            if (!o.shareMaps) p.map.digest.clear();
+            shared.expect(p.map.digest);
+        }
+        rows.push_back(std::move(p));
+    }
+
+    std::optional<SharedRawMap> pendingKeep;  // the map this row rendered, kept after its frames
     const auto sweepStart = Clock::now();
     int index = 0;
     for (const Combination& c : combos) {
+        StudyRow& row = rows[size_t(index)].row;
+        const RawMapKey& mapKey = rows[size_t(index)].map;
         ++index;
-        StudyRow row;
-        row.scene = base.name;
-        row.solution = o.solution;
-        row.spec = c.spec;
-        row.technique = techniqueRow(c.technique).name;
-        row.filter = toString(c.filter);
-        row.radius = c.radius;
-        row.mapSize = c.size;
         if (done.count(row.key())) {
             ++summary.skipped;
             continue;
@@ -217,20 +273,8 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             const double eta = summary.run ? elapsed / summary.run * (summary.planned - index + 1) : 0;
             progressBar(std::cerr, index - 1, summary.planned, what, eta);
         }
-        Scene s = base;
-        s.shadow.mapSize = c.size;
-        s.shadow.filter = c.filter;
-        s.shadow.gaussianRadius = std::max(c.radius, 1);
-        s.shadow.gaussianSigma = 0.0f;  // r / 2
-        s.shadow.satKernelTexels = float(2 * c.radius + 1);
-        overrideTechnique(s.shadow, c.technique, c.params);
-        s.shadow.filter = c.filter;
-        if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
-        // No SAT resolve: it makes msm4's filtered moments for output only, and no frame needs it.
-        PlanOptions planOptions;
-        planOptions.resolveSat = false;
-        const PassPlan plan = planPasses(s, planOptions);
-        if (plan.shadowLights.empty()) throw std::runtime_error(base.path + ": no light casts shadows");
+        const Scene s = rowScene(base, c);
+        const PassPlan plan = rowPlan(s);
         const int light = plan.shadowLights.front();
         const MapLayout layout = mapLayout(s.shadow);
         row.kernelTexels = c.filter == FilterKind::None ? 1.0 : 2.0 * c.radius + 1.0;
@@ -241,20 +285,62 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         row.mapBytes = size_t(c.size) * c.size * size_t(layout.layers) * size_t(layout.bytesPerTexel);
         row.planBytes = plan.bytes(light);
 
-        // Time: a warm-up frame compiles the programs; then `repeats` frames.
+        // The raw map: this row's own shadow pass, or the one an earlier row rendered. A shared
+        // row's shadow pass does not run; its time is the one measured when the map was
+        // rendered (frame k takes the rendering row's frame k), so the frame stays whole.
+        const SharedRawMap* given = shared.find(mapKey.digest);
+        RenderInputs inputs;
+        if (given) inputs.rawMaps[light] = given->map;
+        auto isShadowPass = [&](size_t p) {
+            const PlannedPass& pass = plan.passes[p];
+            return pass.light == light &&
+                   (pass.kind == PassKind::Shadow || pass.kind == PassKind::ShadowSecond);
+        };
+        row.mapKey = mapKey.label;
+        row.mapFrom = given ? given->sourceRow : "";
+
+        // Time: a warm-up frame compiles the programs (and keeps the raw map for later rows);
+        // then `repeats` frames.
         row.copyMillis = copy.measure();
-        RenderResult result = solution.render(s, plan);
+        RenderResult result;
+        {
+            RenderInputs first = inputs;
+            first.keepRawMaps = !given && mapKey.shareable();
+            result = solution.render(s, plan, first);
+            if (first.keepRawMaps) {
+                SharedRawMap keep;
+                keep.map = std::move(result.rawMaps.at(light));
+                keep.sourceRow = row.key();
+                pendingKeep = std::move(keep);
+            }
+        }
         std::vector<std::vector<double>> passMs(plan.passes.size());
-        std::vector<double> frames;
+        std::vector<double> frames, shadowMs;
         for (int k = 0; k < std::max(o.repeats, 1); ++k) {
-            result = solution.render(s, plan);
-            double frame = 0;
+            result = solution.render(s, plan, inputs);
+            double frame = 0, shadowFrame = 0;
             for (size_t p = 0; p < plan.passes.size(); ++p) {
-                passMs[p].push_back(result.passMillis.at(p));
-                frame += result.passMillis[p];
+                double ms = result.passMillis.at(p);
+                if (isShadowPass(p)) {
+                    if (given)
+                        ms = given->shadowMillis.empty()
+                                 ? 0.0
+                                 : given->shadowMillis[size_t(k) % given->shadowMillis.size()];
+                    shadowFrame += ms;
+                }
+                passMs[p].push_back(ms);
+                frame += ms;
             }
             frames.push_back(frame);
+            shadowMs.push_back(shadowFrame);
         }
+        if (pendingKeep) {
+            pendingKeep->shadowMillis = shadowMs;
+            shared.keep(mapKey.digest, std::move(*pendingKeep));
+            pendingKeep.reset();
+        }
+        if (given) ++summary.sharedMaps;
+        else ++summary.shadowMapsRendered;
         row.repeats = int(frames.size());
         row.frameMedian = median(frames);
         row.frameMin = *std::min_element(frames.begin(), frames.end());
@@ -268,11 +354,13 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
                              (plan.passes[p].light >= 0 ? "@L" + std::to_string(plan.passes[p].light) : "") +
                              "=" + fmt("%.3f/%.3f/%.3f", medians.back(),
                                        *std::min_element(v.begin(), v.end()),
-                                       *std::max_element(v.begin(), v.end()));
+                                       *std::max_element(v.begin(), v.end())) +
+                             (given && isShadowPass(p) ? "(shared)" : "");
         }
 
         // Errors against both truths.
         const Image& shadow = result.images.at("shadow");
+        row.imageDigest = imageDigest(shadow);
         const bool haveDepth = depthMaps.count(c.size) > 0;
         const FilterKernel kernel = kernelOf(s.shadow);
         const std::string kernelKey = std::to_string(c.size) + "|" + row.filter + "|" +
@@ -287,7 +375,10 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         row.reused = std::string("truth (") + (truth.fromCache ? "disk cache" : "this sweep") +
                      "); depth map " + std::to_string(c.size) + "² " +
                      (haveDepth ? "shared" : "rendered") + "; filtered truth " +
-                     (haveFiltered ? "shared" : "computed") + "; technique map rendered";
+                     (haveFiltered ? "shared" : "computed") + "; technique map " +
+                     (given ? "shared from " + given->sourceRow + " (its shadow-pass time)"
+                            : mapKey.shareable() && o.shareMaps ? "rendered (shared with later rows)"
+                                                                : "rendered");
         const std::string name = slug(row.spec) + "_" + row.filter +
                                  (c.radius ? "_r" + std::to_string(c.radius) : "") + "_" +
                                  std::to_string(c.size);
@@ -298,10 +389,11 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         if (!haveFiltered)
             writePngPreview(filtered, o.out / "truth" / ("filtered_" + slug(kernelKey) + ".png"), false);
         appendStudyRow(csv, row);
+        shared.done(mapKey.digest);  // (after the last use of `given`: this may drop it)
         ++summary.run;
         if (o.explain) {
             if (o.progress) std::cerr << "\n";
-            log << "== " << what << "  (reused: " << row.reused << ")\n"
+            log << "== " << what << "  (map " << row.mapKey << "; reused: " << row.reused << ")\n"
                 << explainPlan(s, plan, &medians);
         }
     }
@@ -312,8 +404,13 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     summary.notes.push_back(std::to_string(depthMaps.size()) + " depth map(s) and " +
                             std::to_string(filteredTruths.size()) +
                             " filtered truth(s) computed for " + std::to_string(summary.run) +
-                            " row(s); each row renders its own technique map (its shadow pass "
-                            "is part of the frame it times)");
+                            " row(s)");
+    summary.notes.push_back(
+        "technique maps: " + std::to_string(summary.shadowMapsRendered) + " row(s) rendered their own, " +
+        std::to_string(summary.sharedMaps) + " lit with one an earlier row rendered (" +
+        std::to_string(shared.kept()) + " map(s) kept for sharing" +
+        (o.shareMaps ? "" : "; sharing off") + "); a shared row reports the shadow-pass time "
+        "measured when its map was rendered");
     if (o.report) writeStudyReport(o.out, readStudyCsv(csv), log, o.headline);
     return summary;
 }

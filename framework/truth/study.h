@@ -3,7 +3,12 @@
 // pipeline, timed as --explain times it, and compared with the ray-traced truth and with the
 // exact filtered visibility; one CSV row each (study_table.h), then the plots and the page
 // (study_report.h). Work is shared: the truth once per scene (and cached on disk), one depth
-// map per (scene, light, size) for the filtered truths, each filtered truth once per kernel.
+// map per (scene, light, size) for the filtered truths, each filtered truth once per kernel,
+// and each technique's raw shadow map once per sweep for every row whose shadow pass would draw
+// the same texels (raw_map_key.h: same light, size, format, shadow program and its uniforms):
+// the rows differing only in filter and radius, and techniques storing the same map (hard, pcf
+// and pcss share the depth map; msm4-hausdorff and msm-soft the moments). A sharing row's
+// shadow pass does not run; it reports the shadow-pass time measured when the map was rendered.
 #pragma once
 
 #include "study_table.h"
@@ -32,11 +37,14 @@ struct StudyOptions {
     bool explain = false;  // print each row's plan with its median times
     bool progress = true;  // a progress bar on stderr
     bool report = true;    // draw the plots and index.html at the end
+    bool shareMaps = true; // share raw shadow maps between rows (false: every row renders its own)
     std::string headline;  // machine, Mesa and LLVM versions, for the page
 };
 
 struct StudySummary {
     int planned = 0, run = 0, skipped = 0;  // skipped: already in the CSV (resumed)
+    int shadowMapsRendered = 0;  // rows that ran their own shadow pass
+    int sharedMaps = 0;          // rows that lit with a raw map an earlier row rendered
     bool truthFromCache = false;
     double truthSeconds = 0.0, maxStdError = 0.0;
     int samplesPerPixel = 1;

@@ -17,7 +17,7 @@ const std::vector<std::string>& columns() {
         "truth_rmse", "truth_max", "truth_p99", "truth_over_0.05", "truth_leak_area",
         "truth_dark_area", "filtered_rmse", "filtered_max", "filtered_p99",
         "filtered_over_0.05", "filtered_leak_area", "filtered_dark_area", "pixels", "reused",
-        "image", "error_map"};
+        "map_key", "map_from", "image_sha256", "image", "error_map"};
     return c;
 }
 
@@ -89,6 +89,9 @@ std::string toCsvLine(const StudyRow& r) {
     errorFields(f, r.filtered);
     f.push_back(std::to_string(r.truth.pixels));
     f.push_back(quoted(r.reused));
+    f.push_back(quoted(r.mapKey));
+    f.push_back(quoted(r.mapFrom));
+    f.push_back(r.imageDigest);
     f.push_back(r.image);
     f.push_back(r.errorMap);
     std::string line;
@@ -107,7 +110,9 @@ std::vector<StudyRow> readStudyCsv(const fs::path& path) {
         if (lineNo == 1) {
             if (line != studyCsvHeader())
                 throw std::runtime_error(path.string() + ":1: not a study table of this version "
-                                         "(expected the header " + studyCsvHeader() + ")");
+                                         "(expected the header " + studyCsvHeader() +
+                                         "): delete it, or give the study another --out, to "
+                                         "start afresh");
             continue;
         }
         if (line.empty()) continue;
@@ -137,7 +142,8 @@ std::vector<StudyRow> readStudyCsv(const fs::path& path) {
                 e->leakArea = std::stod(f[i++]), e->darkArea = std::stod(f[i++]);
             }
             r.truth.pixels = r.filtered.pixels = std::stoull(f[i++]);
-            r.reused = f[i++], r.image = f[i++], r.errorMap = f[i++];
+            r.reused = f[i++], r.mapKey = f[i++], r.mapFrom = f[i++];
+            r.imageDigest = f[i++], r.image = f[i++], r.errorMap = f[i++];
             rows.push_back(r);
         } catch (const std::logic_error&) {
             throw std::runtime_error(path.string() + ":" + std::to_string(lineNo) +

@@ -33,6 +33,9 @@ struct StudyRow {
     ShadowError truth;         // against the ray-traced truth
     ShadowError filtered;      // against the exact filtered visibility of the same map
     std::string reused;        // what this row took from earlier work, in words
+    std::string mapKey;        // its raw shadow map: what, format, size, light, key digest
+    std::string mapFrom;       // the row (key()) whose raw map it lit with; "": rendered its own
+    std::string imageDigest;   // SHA-256 (16 hex digits) of the G image's floats: same bits, same digest
     std::string image, errorMap;  // files under the study folder
 
     std::string key() const;   // identifies the combination (resume)
