@@ -38,6 +38,7 @@ struct Job {
     std::string missing;  // "file: reason" when a file it needs was not taken
     ChildResult child;
     bool ran = false;
+    bool dropped = false;  // "either" mode: a final of the filter not kept (not rendered, no test)
 };
 
 // Phase times on stderr with SHADOWLAB_GRADER_TIMING=1 (docs/performance.md).
@@ -154,7 +155,8 @@ public:
             s.warnings.push_back("ignored (not stage files):" + names);
         }
 
-        // Phase A: reference renders and the stages that need no reference input file.
+        // Phase A: reference renders and the stages that need no reference input file; phase
+        // B: the stages that read a reference image (run after the reference renders).
         std::vector<Job> phaseA, phaseB;
         for (size_t i = 0; i < scenes_.size(); ++i) {
             if (mode_ == "live" && o_.referenceImages.empty()) phaseA.push_back(makeJob(i, "reference", work / "ref" / scenes_[i].name));
@@ -176,38 +178,63 @@ public:
             phaseA.push_back(job);
         }
         Stopwatch clock;
+        // One list in scoring order (that of the report's findings): the stage renders without
+        // reference input, the robustness test, then the stages that read a reference image.
+        jobs_ = std::move(phaseA);
+        jobs_.insert(jobs_.end(), phaseB.begin(), phaseB.end());
         // The reference renders first: their times set the other renders' limits (jobs.h).
-        const auto isRef = [](const Job& j) { return j.stage == "reference"; };
-        std::stable_partition(phaseA.begin(), phaseA.end(), isRef);
-        const size_t refs = size_t(std::count_if(phaseA.begin(), phaseA.end(), isRef));
+        std::vector<size_t> refJobs, stageJobs, finals;
+        for (size_t k = 0; k < jobs_.size(); ++k) {
+            if (jobs_[k].stage == "reference") refJobs.push_back(k);
+            // "either": the final renders of a filter's scenes wait for the filter stages, and
+            // only the kept filter's are rendered (assignPoints drops the others' tests).
+            else if (rubric_.filters == "either" && jobs_[k].stage == "final" &&
+                     scenes_[jobs_[k].scene].filter != "none")
+                finals.push_back(k);
+            else stageJobs.push_back(k);
+        }
         const auto times = readReferenceTimes(o_.referenceImages);
         for (size_t i = 0; i < scenes_.size(); ++i)
             if (times.count(scenes_[i].name)) refSeconds_[i] = times.at(scenes_[i].name);
-        runPhase(phaseA, 0, refs);
-        runPhase(phaseA, refs, phaseA.size());
-        clock.lap("renders without reference input");
+        runPhase(refJobs);
+        clock.lap("reference renders");
         // The scenes' probes hold on the reference they are graded against, or grading stops.
         checkReferenceProbes(scenes_, [this](size_t i, const std::string& image) {
             return referenceFile(i, image);
         });
-        runPhase(phaseB, 0, phaseB.size());
-        clock.lap("filter renders");
+        if (o_.report) report_ = std::make_unique<ReportWriter>(o_.out / "report");
+        // Every stage render in one run: a barrier between the stages without and with
+        // reference input left a core idle at its end, and cost a submission that loops in
+        // every stage one more whole time limit. Each test is scored as soon as it and those
+        // before it in jobs_ are done, while the next renders run.
+        runPhase(stageJobs);
+        if (!finals.empty()) {
+            std::vector<TestResult> filterTests;
+            for (size_t k : stageJobs)
+                if (jobs_[k].stage == "gaussian" || jobs_[k].stage == "sat")
+                    filterTests.push_back(score(jobs_[k], nullptr));
+            const std::string kept = betterFilter(filterTests);
+            std::vector<size_t> run;
+            for (size_t k : finals) {
+                jobs_[k].dropped = !kept.empty() && scenes_[jobs_[k].scene].filter != kept;
+                if (!jobs_[k].dropped) run.push_back(k);
+            }
+            scoreReady();
+            runPhase(run);
+        }
+        scoreReady();
+        clock.lap("stage renders (and scores)");
         if (mode_ == "golden") {
             for (const auto& w : manifestWarnings(readManifest(goldens_), running_))
                 s.warnings.push_back(w);
         } else {
-            for (auto& j : phaseA)
+            for (auto& j : jobs_)
                 if (j.stage == "reference" && !(j.child.kind == ChildResult::Exited &&
                                                 j.child.exitCode == 0))
                     s.warnings.push_back("reference render of " + scenes_[j.scene].name +
                                          " failed: " + failureText(j.child, o_));
         }
-
-        std::unique_ptr<ReportWriter> report;
-        if (o_.report) report = std::make_unique<ReportWriter>(o_.out / "report");
-        for (auto* phase : {&phaseA, &phaseB})
-            for (auto& job : *phase)
-                if (job.stage != "reference") s.tests.push_back(score(job, report.get()));
+        s.tests = std::move(tests_);
         std::sort(s.tests.begin(), s.tests.end(), [](const TestResult& a, const TestResult& b) {
             auto rank = [](const std::string& st) {
                 const auto& n = stageNames();
@@ -217,7 +244,7 @@ public:
         });
         // Points in exact hundredths; the rubric's filter mode (points.h).
         assignPoints(s, rubric_);
-        if (report) report->finish(s);
+        if (report_) report_->finish(s);
         clock.lap("comparisons and report");
         if (!o_.keepWork) fs::remove_all(work, ec);
         return s;
@@ -237,11 +264,12 @@ private:
                                : goldenFolder(scenes_[scene], goldens_) / scenes_[scene].name / (image + ".exr");
     }
 
-    void runPhase(std::vector<Job>& jobs, size_t from, size_t to) {
+    // Runs the jobs at `which` (indices into jobs_), two at a time; scores as they end.
+    void runPhase(const std::vector<size_t>& which) {
         std::vector<ChildSpec> specs;
         std::vector<size_t> index;
-        for (size_t k = from; k < to; ++k) {
-            Job& j = jobs[k];
+        for (size_t k : which) {
+            Job& j = jobs_[k];
             if (!j.missing.empty()) continue;
             fs::create_directories(j.out);
             const char* input = j.stage == "msm" ? "moments_filtered" : "moments_raw";
@@ -252,16 +280,30 @@ private:
             specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
             index.push_back(k);
         }
-        auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs);
+        auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs,
+                                   [&](size_t i, const ChildResult& r) {
+                                       jobs_[index[i]].child = r;
+                                       jobs_[index[i]].ran = true;
+                                       if (jobs_[index[i]].stage != "reference") scoreReady();
+                                   });
         for (size_t k = 0; k < results.size(); ++k) {
-            Job& j = jobs[index[k]];
-            j.child = results[k];
-            j.ran = true;
+            Job& j = jobs_[index[k]];
             if (j.stage == "reference") refSeconds_[j.scene] = j.child.seconds;
             if (running_.is_null() && j.child.kind == ChildResult::Exited && j.child.exitCode == 0) {
                 std::ifstream in(j.out / "worker.json");
                 try { running_ = nlohmann::json::parse(in); } catch (...) {}
             }
+        }
+    }
+
+    // Scores the tests of jobs_ in order, as far as their renders are done (a job with a
+    // missing file has nothing to render; a dropped one has no test).
+    void scoreReady() {
+        for (; scored_ < jobs_.size(); ++scored_) {
+            const Job& j = jobs_[scored_];
+            if (j.stage == "reference" || j.dropped) continue;
+            if (!j.ran && j.missing.empty()) return;
+            tests_.push_back(score(j, report_.get()));
         }
     }
 
@@ -411,6 +453,10 @@ private:
     fs::path goldens_;
     nlohmann::json running_;  // backend/renderer/Mesa of the workers
     std::map<size_t, double> refSeconds_;  // scene -> its reference render's seconds
+    std::vector<Job> jobs_;                // every render, in scoring order
+    size_t scored_ = 0;                    // jobs_[0, scored_) are scored
+    std::vector<TestResult> tests_;
+    std::unique_ptr<ReportWriter> report_;
 };
 
 }  // namespace

@@ -187,14 +187,16 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
         return specs[i].timeoutSeconds > 0 ? specs[i].timeoutSeconds : limits.timeoutSeconds;
     };
     std::map<std::string, ChildResult> timedOutGroups;  // group -> the first timeout
-    while (next < specs.size() || !running.empty()) {
+    std::vector<size_t> ended;  // not yet handed to `done`
+    // Starts children up to `parallel`.
+    auto startMore = [&] {
         while (next < specs.size() && int(running.size()) < std::max(1, parallel)) {
             const std::string& group = specs[next].group;
             if (auto t = timedOutGroups.find(group); !group.empty() && t != timedOutGroups.end()) {
                 results[next] = t->second;  // the same reason, without the same wait
                 results[next].skipped = true;
                 results[next].log.clear();
-                if (done) done(next, results[next]);
+                ended.push_back(next);
                 ++next;
                 continue;
             }
@@ -203,12 +205,24 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
             pid_t pid = startChild(specs[next], limits, exe);
             if (pid < 0) {
                 results[next].kind = ChildResult::StartFailed;
-                if (done) done(next, results[next]);
+                ended.push_back(next);
             } else {
                 running.push_back({next, pid, Clock::now()});
             }
             ++next;
         }
+    };
+    // The next children first: `done` may take a while (the grader scores there), and the
+    // free places should not wait for it.
+    auto handOver = [&] {
+        startMore();
+        std::vector<size_t> now;
+        now.swap(ended);
+        if (done)
+            for (size_t i : now) done(i, results[i]);
+    };
+    while (next < specs.size() || !running.empty()) {
+        handOver();
         bool progressed = false;
         for (size_t k = 0; k < running.size();) {
             Running& r = running[k];
@@ -237,12 +251,13 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
             for (const auto& [from, to] : specs[r.index].scrub) replaceAll(res.log, from, to);
             if (res.kind == ChildResult::TimedOut && !specs[r.index].group.empty())
                 timedOutGroups.emplace(specs[r.index].group, res);
-            if (done) done(r.index, res);
+            ended.push_back(r.index);
             running.erase(running.begin() + std::ptrdiff_t(k));
             progressed = true;
         }
         if (!progressed) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
+    handOver();  // the last ones
     return results;
 }
 

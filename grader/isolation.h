@@ -51,7 +51,8 @@ struct Limits {
 // The path of the running executable (/proc/self/exe): workers are this binary.
 std::string selfExecutable();
 
-// Runs every spec, at most `parallel` at a time; `done(i, result)` is called as each ends.
+// Runs every spec, at most `parallel` at a time; `done(i, result)` is called as each ends,
+// after the children that take the freed places have started (it may do slow work).
 std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const Limits& limits,
                                      int parallel,
                                      const std::function<void(size_t, const ChildResult&)>& done = {});

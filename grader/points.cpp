@@ -15,10 +15,10 @@ std::string hundredthsText(long h) {
     return buf;
 }
 
-double meanFraction(const GradeSummary& s, const std::string& stage, int& count) {
+double meanFraction(const std::vector<TestResult>& tests, const std::string& stage, int& count) {
     double sum = 0.0;
     count = 0;
-    for (const auto& t : s.tests)
+    for (const auto& t : tests)
         if (t.stage == stage) sum += t.fraction, ++count;
     return count ? sum / count : -1.0;
 }
@@ -28,9 +28,9 @@ double meanFraction(const GradeSummary& s, const std::string& stage, int& count)
 // Returns the chosen stage ("" when the run has no filter test).
 std::string chooseFilter(GradeSummary& s) {
     int nG = 0, nS = 0;
-    const double g = meanFraction(s, "gaussian", nG), sat = meanFraction(s, "sat", nS);
-    if (nG == 0 && nS == 0) return "";
-    const std::string chosen = (nS == 0 || (nG > 0 && g >= sat)) ? "gaussian" : "sat";
+    const double g = meanFraction(s.tests, "gaussian", nG), sat = meanFraction(s.tests, "sat", nS);
+    const std::string chosen = betterFilter(s.tests);
+    if (chosen.empty()) return "";
     const std::string dropped = chosen == "gaussian" ? "sat" : "gaussian";
     std::set<std::string> droppedScenes;
     for (const auto& t : s.tests)
@@ -50,6 +50,13 @@ std::string chooseFilter(GradeSummary& s) {
 }
 
 }  // namespace
+
+std::string betterFilter(const std::vector<TestResult>& tests) {
+    int nG = 0, nS = 0;
+    const double g = meanFraction(tests, "gaussian", nG), sat = meanFraction(tests, "sat", nS);
+    if (nG == 0 && nS == 0) return "";
+    return (nS == 0 || (nG > 0 && g >= sat)) ? "gaussian" : "sat";
+}
 
 long earnedHundredths(double fraction, long maxHundredths) {
     if (maxHundredths <= 0) return 0;

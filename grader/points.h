@@ -16,6 +16,10 @@ namespace sl::grader {
 // `final` tests of the scenes that use it, are left out; notes say so).
 void assignPoints(GradeSummary& summary, const Rubric& rubric);
 
+// The filter stage the "either" mode keeps: the better mean fraction of its tests (gaussian on
+// a tie), the only one with tests, or "" when there is no filter test.
+std::string betterFilter(const std::vector<TestResult>& tests);
+
 // The points in hundredths a test earns for `fraction` of `maxHundredths`: all of them only
 // at fraction >= 1, else at most maxHundredths - 1.
 long earnedHundredths(double fraction, long maxHundredths);
