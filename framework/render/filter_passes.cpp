@@ -5,8 +5,37 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sl {
+namespace {
+
+// A Gaussian pass's dispatch (docs/stage_contract.md, "Invocation mapping"): each invocation
+// writes T = uTexelsPerInvocation consecutive texels along the blur direction (1 unless the
+// shader declares it), so the groups cover local size × T texels along that direction.
+void dispatchTexelRuns(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction) {
+    const int texels = std::max(1, p.getInt("uTexelsPerInvocation", 1));
+    const glm::ivec3 local = p.workGroupSize();
+    const glm::ivec2 cover(local.x * (direction.x == 1 ? texels : 1),
+                           local.y * (direction.y == 1 ? texels : 1));
+    gl::DispatchCompute(GLuint((size.x + cover.x - 1) / cover.x),
+                        GLuint((size.y + cover.y - 1) / cover.y), 1);
+    gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+// GLSL image format qualifier of a map format (the formats mapLayout() gives techniques).
+std::string formatQualifier(GLenum format) {
+    switch (format) {
+        case GL_R32F: return "r32f";
+        case GL_RG32F: return "rg32f";
+        case GL_RGBA32F: return "rgba32f";
+        case GL_RGBA16: return "rgba16";
+    }
+    throw std::logic_error("no image format for texture format " + std::to_string(format));
+}
+
+}  // namespace
 
 std::vector<float> Renderer::gaussianWeights(int radius, float sigma) {
     if (radius <= 0) return {1.0f};
@@ -53,14 +82,7 @@ void Renderer::gaussianPass(const Texture& src, const Texture& dst, int radius, 
     gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer.id());
     gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    // Each invocation writes `texels` consecutive texels along the blur direction.
-    const int texels = std::max(1, p.getInt("uTexelsPerInvocation", 1));
-    const glm::ivec3 local = p.workGroupSize();
-    const glm::ivec2 cover(local.x * (direction.x == 1 ? texels : 1),
-                           local.y * (direction.y == 1 ? texels : 1));
-    gl::DispatchCompute(GLuint((src.width + cover.x - 1) / cover.x),
-                        GLuint((src.height + cover.y - 1) / cover.y), 1);
-    gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    dispatchTexelRuns(p, {src.width, src.height}, direction);
 }
 
 const BufferHandle& Renderer::weightsBuffer(int radius, float sigma) {
@@ -74,7 +96,11 @@ const BufferHandle& Renderer::weightsBuffer(int radius, float sigma) {
 
 void Renderer::techniqueGaussianPass(const Texture& src, const Texture& dst, int radius,
                                      float sigma, glm::ivec2 direction) {
-    GlProgram& p = techniqueProgram(PassKind::GaussianX, false, src.format, {});
+    // One program per (format, radius), like the student's per radius: a compile-time radius
+    // lets llvmpipe unroll the taps and keep the register tile in registers.
+    GlProgram& p = program("techniques/filter_gaussian.comp", "",
+                           {"SL_MAP_FORMAT=" + formatQualifier(src.format),
+                            "SL_BLUR_RADIUS=" + std::to_string(radius)});
     p.use();
     p.set("uRadius", radius);
     p.set("uDirection", direction);
@@ -82,10 +108,7 @@ void Renderer::techniqueGaussianPass(const Texture& src, const Texture& dst, int
     gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, weightsBuffer(radius, sigma).id());
     gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, src.format);
     gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, dst.format);
-    const glm::ivec3 local = p.workGroupSize();
-    gl::DispatchCompute(GLuint((src.width + local.x - 1) / local.x),
-                        GLuint((src.height + local.y - 1) / local.y), 1);
-    gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    dispatchTexelRuns(p, {src.width, src.height}, direction);
 }
 
 void Renderer::techniqueSatPass(const Texture& src, const Texture& hi, const Texture& lo,
