@@ -24,6 +24,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -280,12 +281,20 @@ private:
             specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
             index.push_back(k);
         }
+        // A scoring error fails the grade (results.json says why), once every child has ended.
+        std::exception_ptr failed;
         auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs,
                                    [&](size_t i, const ChildResult& r) {
                                        jobs_[index[i]].child = r;
                                        jobs_[index[i]].ran = true;
-                                       if (jobs_[index[i]].stage != "reference") scoreReady();
+                                       if (jobs_[index[i]].stage == "reference" || failed) return;
+                                       try {
+                                           scoreReady();
+                                       } catch (...) {
+                                           failed = std::current_exception();
+                                       }
                                    });
+        if (failed) std::rethrow_exception(failed);
         for (size_t k = 0; k < results.size(); ++k) {
             Job& j = jobs_[index[k]];
             if (j.stage == "reference") refSeconds_[j.scene] = j.child.seconds;
