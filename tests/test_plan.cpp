@@ -115,11 +115,13 @@ const std::vector<Expected> kLadder = {
     {Technique::Pcf, FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
-    // Gaussian: raw + scratch + filtered; the framework SAT: raw + hi + lo.
+    // Gaussian: raw + scratch + filtered; the framework SAT: raw + hi + lo, and the resolve's
+    // filtered map (output only; PlanOptions::resolveSat).
     {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RG32F", 1, 8, 4 + 3 * 8, 2},
-    {Technique::Vsm, FilterKind::Sat, {K::Shadow, K::SatRows, K::SatColumns, K::Lighting}, "RG32F",
-     1, 8, 4 + 3 * 8, 2},
+    {Technique::Vsm, FilterKind::Sat,
+     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RG32F", 1, 8,
+     4 + 4 * 8, 2},
     {Technique::Vsm, FilterKind::None, {K::Shadow, K::Lighting}, "RG32F", 1, 8, 4 + 8, 2},
     {Technique::Evsm2, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RG32F", 1, 8, 4 + 24, 2},
@@ -139,10 +141,12 @@ const std::vector<Expected> kLadder = {
     // 16 bits: half of msm4's map; the SAT of it is float32 again (sums exceed 1).
     {Technique::Msm4_16bit, FilterKind::Gaussian,
      {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA16", 1, 8, 4 + 24, 4},
-    {Technique::Msm4_16bit, FilterKind::Sat, {K::Shadow, K::SatRows, K::SatColumns, K::Lighting},
-     "RGBA16", 1, 8, 4 + 8 + 32, 4},
-    {Technique::MsmSoft, FilterKind::Sat, {K::Shadow, K::SatRows, K::SatColumns, K::Lighting},
-     "RGBA32F", 1, 16, 4 + 48, 4},
+    {Technique::Msm4_16bit, FilterKind::Sat,
+     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA16", 1, 8,
+     4 + 8 + 32 + 8, 4},
+    {Technique::MsmSoft, FilterKind::Sat,
+     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
+     4 + 64, 4},
 };
 
 }  // namespace

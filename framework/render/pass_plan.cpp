@@ -107,6 +107,12 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
                     plan.passes.push_back({PassKind::SatRows, i, -1, why, "sat-hi"});
                     plan.passes.push_back({PassKind::SatColumns, i, -1, why + std::string(", in place"),
                                            "sat-hi"});
+                    if (options.resolveSat) {
+                        add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
+                                map.bytesPerTexel));
+                        plan.passes.push_back({PassKind::SatResolve, i, -1,
+                                               "filtered map requested as output", "filtered"});
+                    }
                 }
                 break;
             }

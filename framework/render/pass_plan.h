@@ -50,9 +50,11 @@ struct PlannedPass {
 };
 
 struct PlanOptions {
-    // Produce the filtered moment map of a SAT scene (the SAT itself is not a moment map).
-    // The grader and `render` want it; an interactive viewer does not. (msm4 only: the
-    // framework's SAT is read directly by its lighting functions.)
+    // Produce the filtered map of a SAT scene (the SAT itself is not a moment map): a
+    // SatResolve pass evaluates the lighting's box lookup at every texel centre (msm4: the
+    // student's satBoxAverage; other techniques: boxAverage of the double-float table, with
+    // the scene's kernel, techniques/sat_resolve.comp). The grader and `render` want it; an
+    // interactive viewer and the study's timings do not (lighting reads the table itself).
     bool resolveSat = true;
 };
 

@@ -61,6 +61,7 @@ GlProgram& Renderer::techniqueProgram(PassKind kind, bool studentStages, unsigne
             return program("scene.vert", "techniques/second_depth_peel.frag", defines);
         case PassKind::GaussianX:
         case PassKind::GaussianY: return program("techniques/filter_gaussian.comp", "", {format});
+        case PassKind::SatResolve: return program("techniques/sat_resolve.comp", "", {format});
         case PassKind::SatRows:
         case PassKind::SatColumns: {
             // The table's own format: float32 with the map's channel count.

@@ -46,8 +46,13 @@ void readBack(const ShaderLibrary& library, const TechniqueRow& row, const Shado
                 result.images["moments_raw" + suffix + "_layer" + std::to_string(k)] =
                     rawLayers[k].read();
             if (m.tex.count("second")) result.images["second_depth" + suffix] = m.one("second").read();
-            if (m.tex.count("filtered"))
-                result.images["moments_filtered" + suffix] = m.one("filtered").read();
+            if (m.tex.count("filtered")) {
+                const auto& filteredLayers = m.tex.at("filtered");
+                result.images["moments_filtered" + suffix] = filteredLayers.front().read();
+                for (size_t k = 1; k < filteredLayers.size(); ++k)
+                    result.images["moments_filtered" + suffix + "_layer" + std::to_string(k)] =
+                        filteredLayers[k].read();
+            }
             else if (!m.tex.count("sat-hi"))
                 result.images["moments_filtered" + suffix] = raw;
             result.images["moments_raw" + suffix] = std::move(raw);

@@ -168,7 +168,13 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 break;
             }
             case PassKind::SatResolve:
-                satResolvePass(m->one("sat"), m->one("filtered"), fx.satKernelTexels);
+                if (row.studentStages) {
+                    satResolvePass(m->one("sat"), m->one("filtered"), fx.satKernelTexels);
+                    break;
+                }
+                for (size_t k = 0; k < m->tex.at("filtered").size(); ++k)
+                    techniqueSatResolvePass(m->tex.at("sat-hi")[k], m->tex.at("sat-lo")[k],
+                                            m->tex.at("filtered")[k], fx.satKernelTexels);
                 break;
             case PassKind::Lighting: {
                 CameraTargets& t = targets[pass.camera];

@@ -105,6 +105,10 @@ private:
     // The SAT as double-float pairs: rows from `src` into (hi, lo); columns in place.
     void techniqueSatPass(const Texture& src, const Texture& hi, const Texture& lo,
                           glm::ivec2 direction);
+    // The double-float SAT (hi, lo) back into a filtered map `dst` (the map's format): the
+    // lighting's box of `kernelTexels` at every texel centre (techniques/sat_resolve.comp).
+    void techniqueSatResolvePass(const Texture& hi, const Texture& lo, const Texture& dst,
+                                 float kernelTexels);
     const BufferHandle& weightsBuffer(int radius, float sigma);
     void dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction, bool wholeLine);
 
