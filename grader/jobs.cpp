@@ -132,6 +132,9 @@ void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
     }
     nlohmann::json times = nlohmann::json::object();
     const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
+    std::error_code ec;
+    fs::remove_all(workDir(o), ec);  // the shader cache of these renders
+    fs::remove(o.out, ec);           // the batch's scratch folder, if nothing else is there
     for (size_t i = 0; i < results.size(); ++i) {
         const auto& r = results[i];
         if (!(r.kind == ChildResult::Exited && r.exitCode == 0))
