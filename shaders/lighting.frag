@@ -55,6 +55,7 @@ uniform float uMomentBias;  // α, handed to msm.glsl
 #endif
 
 #define SL_MAX_LIGHTS 4
+#define SL_MAX_CASCADES 4  // per light; a light's maps are "slots" SL_MAX_CASCADES·i + c
 
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
@@ -71,32 +72,57 @@ uniform vec3 uLightForward[SL_MAX_LIGHTS];
 uniform vec3 uLightColor[SL_MAX_LIGHTS];     // colour × intensity
 uniform int uLightIsSpot[SL_MAX_LIGHTS];
 uniform float uLightCosHalfCone[SL_MAX_LIGHTS];
-uniform int uLightShadowMap[SL_MAX_LIGHTS];  // index into uShadowMaps, -1: casts no shadow
-uniform mat4 uLightViewProjection[SL_MAX_LIGHTS];
+uniform int uLightShadowMap[SL_MAX_LIGHTS];  // >= 0: casts a shadow; -1: casts none
 uniform vec2 uLightDepthRange[SL_MAX_LIGHTS];
+// Per slot (light i, cascade c at SL_MAX_CASCADES·i + c; c = 0 without cascades): the map's
+// light view and its first index into uShadowMaps.
+uniform mat4 uSlotViewProjection[SL_MAX_LIGHTS * SL_MAX_CASCADES];
+uniform int uSlotShadowMap[SL_MAX_LIGHTS * SL_MAX_CASCADES];
+// Cascades (directional lights, cascades.h): how many (1: one map), the camera view depth at
+// which each ends, and the camera they were fitted to.
+uniform int uLightCascades[SL_MAX_LIGHTS];
+uniform vec4 uLightCascadeFar[SL_MAX_LIGHTS];
+uniform vec3 uCascadeCameraPosition;
+uniform vec3 uCascadeCameraForward;
 uniform float uDepthBias;   // subtracted from the fragment's relative depth (acne)
 #ifdef SL_TECHNIQUE_MSM4
-uniform sampler2D uShadowMaps[SL_MAX_LIGHTS];  // filtered moments, or their SAT
+uniform sampler2D uShadowMaps[SL_MAX_LIGHTS * SL_MAX_CASCADES];  // filtered moments, or their SAT
 uniform float uSatKernel;   // box size in texels (SL_FILTER_SAT)
 #else
 uniform float uLightSize[SL_MAX_LIGHTS];          // emitter diameter (PCSS, msm-soft)
-uniform float uLightFrustumScale[SL_MAX_LIGHTS];  // frustum width: spot × depth; directional
+uniform float uSlotFrustumScale[SL_MAX_LIGHTS * SL_MAX_CASCADES];  // frustum width: spot × depth
 uniform float uNormalOffset = 0.0;                // texels along the normal (hard, pcf, pcss)
 #endif
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out float outShadow;  // G of the first shadowing light
 
+// The slot of light i's map that shades p: its only map, or the cascade whose slice of the
+// camera's view depth holds p, or a later one if p lies outside that cascade's window (a
+// tight fit leaves the slice's edges to its neighbour). -1: no cascade covers p.
+int shadowSlot(int i, vec3 p) {
+    int first = SL_MAX_CASCADES * i;
+    if (uLightCascades[i] <= 1) return first;
+    float depth = dot(p - uCascadeCameraPosition, uCascadeCameraForward);
+    int c = 0;
+    while (c < uLightCascades[i] - 1 && depth > uLightCascadeFar[i][c]) ++c;
+    for (; c < uLightCascades[i]; ++c) {
+        vec4 clip = uSlotViewProjection[first + c] * vec4(p, 1.0);
+        if (all(lessThanEqual(abs(clip.xy / clip.w), vec2(1.0)))) return first + c;
+    }
+    return -1;
+}
+
 #ifdef SL_TECHNIQUE_MSM4
-// G for light i at world position p; 0 outside the light's shadow frustum.
-float shadowIntensity(int i, vec3 p) {
-    vec4 clip = uLightViewProjection[i] * vec4(p, 1.0);
+// G for light i at world position p from the map in `slot`; 0 outside its frustum.
+float shadowIntensityAt(int i, int slot, vec3 p) {
+    vec4 clip = uSlotViewProjection[slot] * vec4(p, 1.0);
     vec3 ndc = clip.xyz / clip.w;
     if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     float lightDepth = dot(p - uLightEye[i], uLightForward[i]);
     float zf = relativeDepth(lightDepth, uLightDepthRange[i]) - uDepthBias;
-    int map = uLightShadowMap[i];
+    int map = uSlotShadowMap[slot];
 #ifdef SL_FILTER_SAT
     vec2 size = vec2(textureSize(uShadowMaps[map], 0));
     vec4 b = satBoxAverage(uShadowMaps[map], uv * size, vec2(uSatKernel));
@@ -106,33 +132,47 @@ float shadowIntensity(int i, vec3 p) {
     return momentShadowIntensity(b, zf);
 }
 #else
-// G for light i at world position p from the technique's row; 0 outside the light's frustum.
-float shadowIntensity(int i, vec3 p) {
+// G for light i at world position p from the technique's row and the map in `slot`; 0
+// outside its frustum.
+float shadowIntensityAt(int i, int slot, vec3 p) {
     vec3 n = normalize(vWorldNormal);
     vec3 l = uLightIsSpot[i] != 0 ? normalize(uLightEye[i] - p) : -uLightForward[i];
     float cosTheta = clamp(abs(dot(n, l)), 1e-4, 1.0);
     float d0 = dot(p - uLightEye[i], uLightForward[i]);
-    float frustum = uLightIsSpot[i] != 0 ? uLightFrustumScale[i] * d0 : uLightFrustumScale[i];
+    float frustum = uLightIsSpot[i] != 0 ? uSlotFrustumScale[slot] * d0 : uSlotFrustumScale[slot];
     // Normal offset: move the receiver along its normal (toward the light's side) by texels.
     p += (dot(n, l) < 0.0 ? -n : n) * (uNormalOffset * frustum / uMapTexels.x);
-    vec4 clip = uLightViewProjection[i] * vec4(p, 1.0);
+    vec4 clip = uSlotViewProjection[slot] * vec4(p, 1.0);
     vec3 ndc = clip.xyz / clip.w;
     if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
     ShadowQuery q;
-    q.map = uLightShadowMap[i];
+    q.map = uSlotShadowMap[slot];
     q.uv = ndc.xy * 0.5 + 0.5;
     q.receiverDepth = dot(p - uLightEye[i], uLightForward[i]);
     q.depthRange = uLightDepthRange[i];
     q.zf = techniqueRelativeDepth(q.receiverDepth, q.depthRange) - uDepthBias;
     q.tanTheta = min(sqrt(1.0 - cosTheta * cosTheta) / cosTheta, 10.0);
     q.isSpot = uLightIsSpot[i];
-    q.frustumScale = uLightFrustumScale[i];
+    q.frustumScale = uSlotFrustumScale[slot];
     q.lightSize = uLightSize[i];
     q.texelWorld = texelWorldAt(q, q.receiverDepth);
     q.texelDepth = q.texelWorld / (q.depthRange.y - q.depthRange.x);
     return SL_SHADOW_INTENSITY(q);
 }
 #endif
+
+// G for light i at world position p, from the map (cascade) that covers p. Sampler arrays take
+// dynamically uniform indices only (llvmpipe shades a SIMD group with one index): so the loop
+// runs over the light's slots, a uniform count, and shades with the one chosen, so that every
+// map index is the loop's, never a per-pixel value.
+float shadowIntensity(int i, vec3 p) {
+    int slot = shadowSlot(i, p);
+    float G = 0.0;
+    int first = SL_MAX_CASCADES * i;
+    for (int s = first; s < first + max(uLightCascades[i], 1); ++s)
+        if (s == slot) G = shadowIntensityAt(i, s, p);
+    return G;
+}
 
 void main() {
     vec3 n = normalize(vWorldNormal);

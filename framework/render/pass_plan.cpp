@@ -2,10 +2,12 @@
 // (see pass_plan.h).
 #include "pass_plan.h"
 
+#include "cascades.h"
 #include "technique.h"
 
 #include <GL/glcorearb.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace sl {
@@ -24,17 +26,24 @@ const char* toString(PassKind kind) {
     return "?";
 }
 
-const PlannedTexture* PassPlan::texture(int light, const std::string& role) const {
+const PlannedTexture* PassPlan::texture(int light, const std::string& role, int cascade) const {
     for (const auto& t : textures)
-        if (t.light == light && t.role == role) return &t;
+        if (t.light == light && t.role == role && t.cascade == cascade) return &t;
     return nullptr;
 }
 
-size_t PassPlan::bytes(int light) const {
+size_t PassPlan::bytes(int light, int cascade) const {
     size_t sum = 0;
     for (const auto& t : textures)
-        if (t.light >= 0 && (light < 0 || t.light == light)) sum += t.bytes;
+        if (t.light >= 0 && (light < 0 || t.light == light) && (cascade < 0 || t.cascade == cascade))
+            sum += t.bytes;
     return sum;
+}
+
+int PassPlan::cascadeCount(int light) const {
+    int n = 0;
+    for (const PlannedCascade& c : cascades) n += c.light == light;
+    return std::max(n, 1);
 }
 
 namespace {
@@ -47,75 +56,116 @@ PlannedTexture tex(int light, int camera, std::string role, std::string format, 
 
 }  // namespace
 
-PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
-    PassPlan plan;
+namespace {
+
+// The maps and passes of light i (its cascade c: every cascade has a full set of its own).
+void planLightMaps(PassPlan& plan, const Scene& scene, int i, int c, const std::string& light,
+                   const PlanOptions& options) {
     const ShadowEffect& fx = scene.shadow;
     const TechniqueRow& row = techniqueRow(fx.technique);
     const MapLayout map = mapLayout(fx);
     const int n = fx.mapSize;
     const bool filterPasses = !row.filterInLighting;
+    auto add = [&](PlannedTexture t) {
+        t.cascade = c;
+        plan.textures.push_back(std::move(t));
+    };
+    auto pass = [&](PlannedPass p) {
+        p.cascade = c;
+        plan.passes.push_back(std::move(p));
+    };
+    add(tex(i, -1, "depth", "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
+    add(tex(i, -1, "raw", map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
+    pass(
+        {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, "raw"});
+    if (row.secondDepth) {
+        add(tex(i, -1, "second", "R32F", GL_R32F, n, n, 1, 4));
+        pass({PassKind::ShadowSecond, i, -1,
+                               "second-depth: peel the first surface, store the midpoint",
+                               "second"});
+    }
+    if (!filterPasses) return;
+    switch (fx.filter) {
+        case FilterKind::None: break;
+        case FilterKind::Gaussian: {
+            const std::string why = "gaussian filter, radius " +
+                                    std::to_string(fx.gaussianRadius);
+            add(tex(i, -1, "scratch", map.formatName, map.glFormat, n, n, map.layers,
+                    map.bytesPerTexel));
+            add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
+                    map.bytesPerTexel));
+            pass({PassKind::GaussianX, i, -1, why, "scratch"});
+            pass({PassKind::GaussianY, i, -1, why, "filtered"});
+            break;
+        }
+        case FilterKind::Sat: {
+            char why[64];
+            std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels",
+                          fx.satKernelTexels);
+            if (row.studentStages) {
+                add(tex(i, -1, "scratch", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
+                add(tex(i, -1, "sat", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
+                pass({PassKind::SatRows, i, -1, why, "scratch"});
+                pass({PassKind::SatColumns, i, -1, why, "sat"});
+                if (options.resolveSat) {
+                    add(tex(i, -1, "filtered", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
+                    pass({PassKind::SatResolve, i, -1,
+                                           "filtered moments requested as output",
+                                           "filtered"});
+                }
+            } else {
+                // Double-float pairs: float32 sums of a 1024² map lose the digits a box
+                // average needs; hi + lo keep ~48 bits (docs/techniques.md).
+                const int bpt = map.channels * 4;
+                add(tex(i, -1, "sat-hi", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
+                add(tex(i, -1, "sat-lo", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
+                pass({PassKind::SatRows, i, -1, why, "sat-hi"});
+                pass({PassKind::SatColumns, i, -1, why + std::string(", in place"),
+                                       "sat-hi"});
+                if (options.resolveSat) {
+                    add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
+                            map.bytesPerTexel));
+                    pass({PassKind::SatResolve, i, -1,
+                                           "filtered map requested as output", "filtered"});
+                }
+            }
+            break;
+        }
+    }
+}
+
+// Cascades of light i: its own count for a directional light that declares them (and a scene
+// with a camera to fit them to), else 1.
+int cascadeCount(const Scene& scene, int i) {
+    const Light& l = scene.lights[i];
+    return l.type == LightType::Directional && !scene.cameras.empty() ? l.cascades : 1;
+}
+
+}  // namespace
+
+PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
+    PassPlan plan;
+    const ShadowEffect& fx = scene.shadow;
+    const TechniqueRow& row = techniqueRow(fx.technique);
+    const MapLayout map = mapLayout(fx);
+    std::vector<Bounds> bounds;  // only when a light has cascades (meshes are built for it)
     for (int i = 0; i < int(scene.lights.size()); ++i) {
         if (!scene.lights[i].castsShadows) continue;
         plan.shadowLights.push_back(i);
-        const std::string light = "light " + std::to_string(i);
-        auto add = [&](PlannedTexture t) { plan.textures.push_back(std::move(t)); };
-        add(tex(i, -1, "depth", "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
-        add(tex(i, -1, "raw", map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
-        plan.passes.push_back(
-            {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, "raw"});
-        if (row.secondDepth) {
-            add(tex(i, -1, "second", "R32F", GL_R32F, n, n, 1, 4));
-            plan.passes.push_back({PassKind::ShadowSecond, i, -1,
-                                   "second-depth: peel the first surface, store the midpoint",
-                                   "second"});
+        const int cascades = cascadeCount(scene, i);
+        if (cascades == 1) {
+            planLightMaps(plan, scene, i, 0, "light " + std::to_string(i), options);
+            continue;
         }
-        if (!filterPasses) continue;
-        switch (fx.filter) {
-            case FilterKind::None: break;
-            case FilterKind::Gaussian: {
-                const std::string why = "gaussian filter, radius " +
-                                        std::to_string(fx.gaussianRadius);
-                add(tex(i, -1, "scratch", map.formatName, map.glFormat, n, n, map.layers,
-                        map.bytesPerTexel));
-                add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
-                        map.bytesPerTexel));
-                plan.passes.push_back({PassKind::GaussianX, i, -1, why, "scratch"});
-                plan.passes.push_back({PassKind::GaussianY, i, -1, why, "filtered"});
-                break;
-            }
-            case FilterKind::Sat: {
-                char why[64];
-                std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels",
-                              fx.satKernelTexels);
-                if (row.studentStages) {
-                    add(tex(i, -1, "scratch", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
-                    add(tex(i, -1, "sat", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
-                    plan.passes.push_back({PassKind::SatRows, i, -1, why, "scratch"});
-                    plan.passes.push_back({PassKind::SatColumns, i, -1, why, "sat"});
-                    if (options.resolveSat) {
-                        add(tex(i, -1, "filtered", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
-                        plan.passes.push_back({PassKind::SatResolve, i, -1,
-                                               "filtered moments requested as output",
-                                               "filtered"});
-                    }
-                } else {
-                    // Double-float pairs: float32 sums of a 1024² map lose the digits a box
-                    // average needs; hi + lo keep ~48 bits (docs/techniques.md).
-                    const int bpt = map.channels * 4;
-                    add(tex(i, -1, "sat-hi", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
-                    add(tex(i, -1, "sat-lo", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
-                    plan.passes.push_back({PassKind::SatRows, i, -1, why, "sat-hi"});
-                    plan.passes.push_back({PassKind::SatColumns, i, -1, why + std::string(", in place"),
-                                           "sat-hi"});
-                    if (options.resolveSat) {
-                        add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
-                                map.bytesPerTexel));
-                        plan.passes.push_back({PassKind::SatResolve, i, -1,
-                                               "filtered map requested as output", "filtered"});
-                    }
-                }
-                break;
-            }
+        if (bounds.empty()) bounds = sceneBounds(scene);
+        const Light& l = scene.lights[i];
+        const glm::vec2 range = cascadeRange(scene.cameras.front(), bounds);
+        const std::vector<float> d =
+            cascadeSplits(range.x, range.y, cascades, l.cascadeSplit, l.cascadeLambda);
+        for (int c = 0; c < cascades; ++c) {
+            plan.cascades.push_back({i, c, d[c], d[c + 1]});
+            planLightMaps(plan, scene, i, c,
+                          "light " + std::to_string(i) + " cascade " + std::to_string(c), options);
         }
     }
     if (!plan.shadowLights.empty()) {
@@ -157,13 +207,23 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
         }
         out += "\n";
     }
+    for (const PlannedCascade& c : plan.cascades) {
+        const PlannedTexture* raw = plan.texture(c.light, "raw", c.cascade);
+        char buf[192];
+        std::snprintf(buf, sizeof buf,
+                      "  light %d cascade %d: camera depth %.3g to %.3g, map %d² %s, %.2f MiB\n",
+                      c.light, c.cascade, c.nearDepth, c.farDepth, raw ? raw->width : 0,
+                      raw ? raw->format.c_str() : "?", plan.bytes(c.light, c.cascade) / 1048576.0);
+        out += buf;
+    }
     double total = 0.0;
     for (size_t i = 0; i < plan.passes.size(); ++i) {
         const PlannedPass& p = plan.passes[i];
         const PlannedTexture* t = nullptr;
         for (const auto& candidate : plan.textures)
             if (candidate.role == p.writes &&
-                (p.light >= 0 ? candidate.light == p.light : candidate.camera == p.camera))
+                (p.light >= 0 ? candidate.light == p.light && candidate.cascade == p.cascade
+                              : candidate.camera == p.camera))
                 t = &candidate;
         char fmt[48] = "";
         if (t)

@@ -39,6 +39,7 @@ struct PlannedTexture {
     int width = 0, height = 0;
     int layers = 1;          // textures of this role (CSM: several RGBA32F maps)
     size_t bytes = 0;        // all layers
+    int cascade = 0;         // which of the light's cascades (each has its own set of maps)
 };
 
 struct PlannedPass {
@@ -47,6 +48,16 @@ struct PlannedPass {
     int camera = -1;  // index into Scene::cameras (lighting passes)
     std::string why;  // which declared effect calls for it
     std::string writes;  // the role it writes ("raw", "filtered", ...)
+    int cascade = 0;     // shadow and filter passes: which of the light's cascades
+};
+
+// One cascade of a directional light that declares `cascades` > 1 (cascades.h): the slice of
+// the first camera's view depth it covers. Its maps are the light's textures with this
+// `cascade`; the renderer fits its light view around the slice.
+struct PlannedCascade {
+    int light = 0;
+    int cascade = 0;
+    float nearDepth = 0.0f, farDepth = 0.0f;  // camera view depth, world units
 };
 
 struct PlanOptions {
@@ -64,9 +75,12 @@ struct PassPlan {
     int momentChannels = 0;         // channels the map stores in all (MSM: 4; CSM: 2M; none: 0)
     std::vector<PlannedTexture> textures;  // everything the renderer allocates, nothing else
     std::vector<std::string> defines;      // the permutation of the shadow/lighting programs
+    std::vector<PlannedCascade> cascades;  // lights with cascades > 1 only, light by light
 
-    const PlannedTexture* texture(int light, const std::string& role) const;
-    size_t bytes(int light = -1) const;    // of one light's textures; -1: all shadow textures
+    const PlannedTexture* texture(int light, const std::string& role, int cascade = 0) const;
+    // Of one light's textures (one cascade's, or all with -1); light -1: all shadow textures.
+    size_t bytes(int light = -1, int cascade = -1) const;
+    int cascadeCount(int light) const;     // 1 for a light without cascades
 };
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options = {});

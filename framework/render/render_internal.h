@@ -23,7 +23,16 @@ struct ShadowMaps {
     LightView view;
     std::vector<const Texture*> forLighting;  // what lighting samples, in unit order
     Texture& one(const std::string& role) { return tex.at(role).front(); }
+    float frustumWidth = 0.0f;  // a cascade's: its window's width, world units (0: the light's)
 };
+
+// A light's maps, one set per cascade (cascade 0 only without cascades).
+struct ShadowMapId {
+    int light = 0;
+    int cascade = 0;
+    auto operator<=>(const ShadowMapId&) const = default;
+};
+using ShadowMapSet = std::map<ShadowMapId, ShadowMaps>;
 
 // A framebuffer with `colors` as its draw buffers, in order, and `depth` as its depth.
 FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, const Texture& depth);
@@ -38,16 +47,17 @@ void noteStub(const ShaderLibrary& library, RenderResult& result, const std::str
 // Reads the maps back into `result`, and tells unimplemented stages apart from wrong ones by
 // the stub value (student stages only).
 void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
-              const PassPlan& plan, std::map<int, ShadowMaps>& maps, RenderResult& result);
+              const PassPlan& plan, ShadowMapSet& maps, RenderResult& result);
 
 // The shadow pass (or the second-depth peel) of one light into its maps, with program `p`.
 void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
                    const ShadowEffect& fx, bool studentStages, const SceneGeometry& geometry);
 
 // The lighting pass of camera `cam` into `color`/`shadow`/`depth` (created here), with program
-// `p` and every light's maps bound as the lighting samples them.
-void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
-                     const std::vector<LightView>& views, std::map<int, ShadowMaps>& maps,
+// `p` and every light's maps (every cascade's) bound as the lighting samples them; `plan`
+// gives the cascades' depth ranges.
+void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, const Camera& cam,
+                     const std::vector<LightView>& views, ShadowMapSet& maps,
                      bool studentStages, const SceneGeometry& geometry, Texture& color,
                      Texture& shadow, Texture& depth);
 

@@ -36,10 +36,12 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
     for (const auto& [name, value] : resolvedParameters(scene.shadow)) parameters[name] = value;
     nlohmann::json maps = nlohmann::json::array();
     for (const PlannedTexture& t : plan.textures)
-        if (t.light >= 0)
+        if (t.light >= 0) {
             maps.push_back({{"light", t.light}, {"role", t.role}, {"format", t.format},
                             {"width", t.width}, {"height", t.height}, {"layers", t.layers},
                             {"bytes", t.bytes}});
+            if (!plan.cascades.empty()) maps.back()["cascade"] = t.cascade;
+        }
     nlohmann::json technique = {
         {"name", toString(scene.shadow.technique)},
         {"filter", toString(scene.shadow.filter)},
@@ -48,6 +50,11 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
         {"maps", maps},
         {"shadowMapBytes", plan.bytes()},
     };
+    // Only with cascades, so that other scenes' render.json stay as they were.
+    for (const PlannedCascade& c : plan.cascades)
+        technique["cascades"].push_back({{"light", c.light}, {"cascade", c.cascade},
+                                         {"near", c.nearDepth}, {"far", c.farDepth},
+                                         {"bytes", plan.bytes(c.light, c.cascade)}});
     nlohmann::json sidecar = {
         {"scene", scene.path},
         {"solution", meta.solution},

@@ -35,10 +35,12 @@ void noteStub(const ShaderLibrary& library, RenderResult& result, const std::str
 }
 
 void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
-              const PassPlan& plan, std::map<int, ShadowMaps>& maps, RenderResult& result) {
-    for (auto& [li, m] : maps) {
-        const std::string suffix = li == plan.shadowLights.front() ? ""
-                                                                   : "_light" + std::to_string(li);
+              const PassPlan& plan, ShadowMapSet& maps, RenderResult& result) {
+    for (auto& [id, m] : maps) {
+        const int li = id.light;
+        const std::string suffix =
+            (li == plan.shadowLights.front() ? "" : "_light" + std::to_string(li)) +
+            (id.cascade > 0 ? "_cascade" + std::to_string(id.cascade) : "");
         const auto& rawLayers = m.tex.at("raw");
         Image raw = rawLayers.front().read();
         if (!row.studentStages) {

@@ -4,6 +4,8 @@
 // render_readback.cpp (maps into RenderResult).
 #include "render_internal.h"
 
+#include "cascades.h"
+
 #include <chrono>
 #include <stdexcept>
 
@@ -63,14 +65,24 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     for (const Light& light : scene.lights)
         views.push_back(computeLightView(light, fx, geometry.bounds()));
     // Allocate what the plan lists, and nothing else.
-    std::map<int, ShadowMaps> maps;
-    for (int li : plan.shadowLights) maps[li].view = views[li];
+    ShadowMapSet maps;
+    for (int li : plan.shadowLights) maps[{li, 0}].view = views[li];
+    for (const PlannedCascade& c : plan.cascades) {
+        ShadowMaps& m = maps[{c.light, c.cascade}];
+        float halfWidth = 0.0f;
+        m.view = fitCascade(views[c.light], scene.cameras.front(), c.nearDepth, c.farDepth,
+                            fx.mapSize, &halfWidth);
+        m.frustumWidth = 2.0f * halfWidth;
+    }
     for (const PlannedTexture& t : plan.textures) {
         if (t.light < 0) continue;
-        ShadowMaps& m = maps[t.light];
+        ShadowMaps& m = maps[{t.light, t.cascade}];
         auto& layers = m.tex[t.role];
         const auto filtered = inputs.filteredMoments.find(t.light);
         if (t.role == "raw" && filtered != inputs.filteredMoments.end()) {
+            if (plan.cascadeCount(t.light) > 1)
+                throw std::invalid_argument("RenderInputs::filteredMoments: light " +
+                                            std::to_string(t.light) + " has cascades");
             const Image& given = filtered->second;
             layers.push_back(Texture::create(given.width, given.height, GL_RGBA32F, GL_LINEAR));
             layers.back().upload(given);
@@ -81,11 +93,16 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             layers.push_back(Texture::create(t.width, t.height, t.glFormat, samplerFilter(t.role)));
         const auto raw = inputs.rawMaps.find(t.light);
         if (raw != inputs.rawMaps.end() && (t.role == "raw" || t.role == "second")) {
-            uploadRawMap(raw->second, t, layers);
+            const RawShadowMap& all = raw->second;
+            if (t.cascade > int(all.cascades.size()))
+                throw std::invalid_argument("RenderInputs::rawMaps: light " +
+                                            std::to_string(t.light) + ": no map for cascade " +
+                                            std::to_string(t.cascade));
+            uploadRawMap(t.cascade == 0 ? all : all.cascades[t.cascade - 1], t, layers);
             m.givenRaw = true;
         }
     }
-    for (auto& [li, m] : maps) {
+    for (auto& [id, m] : maps) {
         for (auto& t : m.tex.at("raw")) m.forLighting.push_back(&t);
         // A given second-depth map: what its (skipped) peel pass would have added.
         if (m.givenRaw && m.tex.count("second")) m.forLighting.push_back(&m.one("second"));
@@ -106,7 +123,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     gl::DepthFunc(GL_LESS);
     for (const PlannedPass& pass : plan.passes) {
         const auto start = std::chrono::steady_clock::now();
-        ShadowMaps* m = pass.light >= 0 ? &maps.at(pass.light) : nullptr;
+        ShadowMaps* m = pass.light >= 0 ? &maps.at({pass.light, pass.cascade}) : nullptr;
         const bool shadowPass = pass.kind == PassKind::Shadow || pass.kind == PassKind::ShadowSecond;
         // The caller's filtered moments stand in for all of this light's passes, its raw map
         // for its shadow passes.
@@ -178,7 +195,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 break;
             case PassKind::Lighting: {
                 CameraTargets& t = targets[pass.camera];
-                runLightingPass(passProgram(PassKind::Lighting, 0, defines), scene,
+                runLightingPass(passProgram(PassKind::Lighting, 0, defines), scene, plan,
                                 scene.cameras.at(pass.camera), views, maps, row.studentStages,
                                 geometry, t.color, t.shadow, t.depth);
                 break;
@@ -191,9 +208,10 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     }
     readBack(library_, row, fx, plan, maps, result);
     if (inputs.keepRawMaps)
-        for (auto& [li, m] : maps) {
+        for (auto& [id, m] : maps) {  // in (light, cascade) order
             if (m.given) continue;  // a filtered map stood in: there is no raw map
-            RawShadowMap& out = result.rawMaps[li];
+            RawShadowMap& light = result.rawMaps[id.light];
+            RawShadowMap& out = id.cascade == 0 ? light : light.cascades.emplace_back();
             for (const Texture& t : m.tex.at("raw")) out.raw.push_back(t.read());
             if (m.tex.count("second")) out.second = m.one("second").read();
         }

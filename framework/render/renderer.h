@@ -27,6 +27,9 @@ namespace sl {
 struct RawShadowMap {
     std::vector<Image> raw;  // one image per layer of the "raw" role (1 but for csm)
     Image second;            // second-depth only; empty (0 × 0) for every other technique
+    // A directional light with cascades (cascades.h): the members above are cascade 0's,
+    // these are cascades 1 .. n-1 (empty without cascades), each with its own `raw`/`second`.
+    std::vector<RawShadowMap> cascades;
 };
 
 // Maps a render takes from the caller instead of making them, by index into Scene::lights.

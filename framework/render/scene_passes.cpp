@@ -86,8 +86,8 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
-                     const std::vector<LightView>& views, std::map<int, ShadowMaps>& maps,
+void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, const Camera& cam,
+                     const std::vector<LightView>& views, ShadowMapSet& maps,
                      bool studentStages, const SceneGeometry& geometry, Texture& colorTarget,
                      Texture& shadowTarget, Texture& depthTarget) {
     const ShadowEffect& fx = scene.shadow;
@@ -111,11 +111,18 @@ void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
     p.set("uMomentBias", fx.momentBias);
     p.set("uDepthBias", fx.depthBias);
     p.set("uSatKernel", fx.satKernelTexels);
+    constexpr int kMaxCascades = 4;  // SL_MAX_CASCADES in lighting.frag
+    constexpr int kSlots = 4 * kMaxCascades;
     std::vector<glm::vec3> eye, forward, color;
-    std::vector<int> isSpot, mapIndex, units = {0, 1, 2, 3};
-    std::vector<float> cosHalfCone, lightSize, frustumScale;
-    std::vector<glm::mat4> viewProj;
+    std::vector<int> isSpot, mapIndex, cascades, units(kSlots);
+    for (int k = 0; k < kSlots; ++k) units[k] = k;
+    std::vector<float> cosHalfCone, lightSize;
     std::vector<glm::vec2> range;
+    std::vector<glm::vec4> cascadeFar;
+    // Per slot (light i, cascade c at kMaxCascades·i + c): light view, first map, frustum width.
+    std::vector<glm::mat4> slotViewProj(kSlots, glm::mat4(1.0f));
+    std::vector<int> slotMap(kSlots, -1);
+    std::vector<float> slotFrustum(kSlots, 0.0f);
     int unit = 0;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& l = scene.lights[i];
@@ -124,20 +131,30 @@ void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
         color.push_back(l.color * l.intensity);
         isSpot.push_back(l.type == LightType::Spot);
         cosHalfCone.push_back(std::cos(glm::radians(l.coneDegrees * 0.5f)));
-        viewProj.push_back(views[i].viewProjection);
         range.push_back(views[i].depthRange);
         lightSize.push_back(l.size);
         // Width of the shadow frustum: spot: × the depth; directional: as is.
-        frustumScale.push_back(l.type == LightType::Spot
-                                   ? 2.0f * std::tan(glm::radians(l.coneDegrees * 0.5f))
-                                   : 2.0f * l.extent);
-        auto it = maps.find(int(i));
-        if (it != maps.end()) {
-            mapIndex.push_back(unit);
-            for (const Texture* tex : it->second.forLighting)
-                gl::BindTextureUnit(GLuint(unit++), tex->id());
-        } else {
-            mapIndex.push_back(-1);
+        const float frustum = l.type == LightType::Spot
+                                  ? 2.0f * std::tan(glm::radians(l.coneDegrees * 0.5f))
+                                  : 2.0f * l.extent;
+        const int n = plan.cascadeCount(int(i));
+        cascades.push_back(n);
+        glm::vec4 far(1e30f);
+        for (const PlannedCascade& c : plan.cascades)
+            if (c.light == int(i)) far[c.cascade] = c.farDepth;
+        cascadeFar.push_back(far);
+        const int first = kMaxCascades * int(i);
+        slotViewProj[first] = views[i].viewProjection;
+        slotFrustum[first] = frustum;
+        mapIndex.push_back(maps.count({int(i), 0}) ? unit : -1);
+        for (int c = 0; c < n; ++c) {
+            auto it = maps.find({int(i), c});
+            if (it == maps.end()) continue;
+            const ShadowMaps& m = it->second;
+            slotViewProj[first + c] = m.view.viewProjection;
+            if (m.frustumWidth > 0.0f) slotFrustum[first + c] = m.frustumWidth;
+            slotMap[first + c] = unit;
+            for (const Texture* tex : m.forLighting) gl::BindTextureUnit(GLuint(unit++), tex->id());
         }
     }
     p.set("uLightCount", int(scene.lights.size()));
@@ -147,14 +164,20 @@ void runLightingPass(GlProgram& p, const Scene& scene, const Camera& cam,
     p.setArray("uLightIsSpot", isSpot);
     p.setArray("uLightCosHalfCone", cosHalfCone);
     p.setArray("uLightShadowMap", mapIndex);
-    p.setArray("uLightViewProjection", viewProj);
     p.setArray("uLightDepthRange", range);
+    p.setArray("uLightCascades", cascades);
+    p.setArray("uLightCascadeFar", cascadeFar);
+    p.setArray("uSlotViewProjection", slotViewProj);
+    p.setArray("uSlotShadowMap", slotMap);
+    const Camera& fitted = scene.cameras.front();  // the cascades are fitted to it
+    p.set("uCascadeCameraPosition", fitted.position);
+    p.set("uCascadeCameraForward", glm::normalize(fitted.target - fitted.position));
     if (studentStages) {
         p.setArray("uShadowMaps", units);
     } else {
         setTechniqueUniforms(p, fx, unit);
         p.setArray("uLightSize", lightSize);
-        p.setArray("uLightFrustumScale", frustumScale);
+        p.setArray("uSlotFrustumScale", slotFrustum);
     }
     geometry.draw(p, false, true);
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);

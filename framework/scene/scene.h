@@ -33,6 +33,9 @@ struct Camera {
 
 enum class LightType { Spot, Directional };
 
+// How a directional light's cascades cut the camera's view range (cascades.h).
+enum class CascadeSplit { Uniform, Logarithmic, Practical };
+
 struct Light {
     LightType type = LightType::Spot;
     glm::vec3 position{0.0f, 5.0f, 0.0f};  // spot: the light; directional: eye of its shadow frustum
@@ -45,6 +48,12 @@ struct Light {
     glm::vec2 rectangle{0.0f};    // "size": [w, h]: a w × h rectangular emitter (size = max);
                                   // else a disk of diameter `size` (truth/, docs/scenes.md)
     bool castsShadows = true;
+    // Directional: cascaded shadow maps, one map per slice of the first camera's view range
+    // (1 = a single map over `extent`); the slices follow `cascadeSplit` (practical: the
+    // blend λ·logarithmic + (1 − λ)·uniform, λ = `cascadeLambda`). See cascades.h.
+    int cascades = 1;
+    CascadeSplit cascadeSplit = CascadeSplit::Practical;
+    float cascadeLambda = 0.5f;
 };
 
 enum class ShapeType { Plane, Box, Sphere, Cylinder, Torus, Mesh };

@@ -28,6 +28,7 @@ using namespace scene_json;
 
 // The names the file uses for the enums, in the order of their values.
 const std::vector<std::string> kLightTypes = {"spot", "directional"};
+const std::vector<std::string> kCascadeSplits = {"uniform", "logarithmic", "practical"};
 const std::vector<std::string> kShapes = {"plane", "box", "sphere", "cylinder", "torus", "mesh"};
 const std::vector<std::string> kFilters = {"none", "gaussian", "sat"};
 
@@ -61,7 +62,8 @@ Light readLight(const Reader& R, const Node& n) {
     const bool spot = l.type == LightType::Spot;
     std::vector<std::string> keys = {"type", "position", "target", "color", "intensity", "size",
                                      "castsShadows"};
-    keys.push_back(spot ? "coneDegrees" : "extent");
+    if (spot) keys.push_back("coneDegrees");
+    else keys.insert(keys.end(), {"extent", "cascades", "cascadeSplit", "cascadeLambda"});
     R.object(n, keys, spot ? "a spot light" : "a directional light");
     l.position = R.vec3(n["position"], Range::any());
     l.target = R.vec3(n["target"], Range::any());
@@ -80,6 +82,13 @@ Light readLight(const Reader& R, const Node& n) {
     if (auto v = n["castsShadows"]) l.castsShadows = R.boolean(v);
     if (auto v = n["coneDegrees"]) l.coneDegrees = float(R.number(v, Range::open(0, 170)));
     if (auto v = n["extent"]) l.extent = float(R.number(v, Range::positive()));
+    if (auto v = n["cascades"]) l.cascades = R.integer(v, Range::closed(1, 4));
+    if (auto v = n["cascadeSplit"]) l.cascadeSplit = CascadeSplit(R.choice(v, kCascadeSplits));
+    if (auto v = n["cascadeLambda"]) {
+        l.cascadeLambda = float(R.number(v, Range::closed(0, 1)));
+        if (l.cascadeSplit != CascadeSplit::Practical)
+            R.fail(v, "no cascadeLambda unless cascadeSplit is \"practical\" (the default)");
+    }
     return l;
 }
 

@@ -104,6 +104,17 @@ void lightSettings(const Scene& scene, std::vector<SettingEdit>& edits) {
             float size = light.size;
             if (ImGui::SliderFloat("size", &size, 0.0f, 2.0f, "%.3f")) edits.push_back({key, size});
         }
+        if (light.type == LightType::Directional) {  // cascaded maps (cascades.h)
+            const std::string light_ = "lights." + std::to_string(i) + ".";
+            int cascades = light.cascades;
+            if (ImGui::SliderInt("cascades", &cascades, 1, 4))
+                edits.push_back({light_ + "cascades", cascades});
+            if (light.cascades > 1 && light.cascadeSplit == CascadeSplit::Practical) {
+                float lambda = light.cascadeLambda;
+                if (ImGui::SliderFloat("cascade lambda", &lambda, 0.0f, 1.0f, "%.2f"))
+                    edits.push_back({light_ + "cascadeLambda", lambda});
+            }
+        }
         ImGui::PopID();
     }
 }
