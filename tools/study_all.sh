@@ -12,8 +12,9 @@ ROOT="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
 OUT="${SHADOWLAB_STUDY_OUT:-$ROOT/out/study}"
 DOCS="$ROOT/docs/accuracy"
 # The documented sweep: every technique of the table, 256²..2048² maps, Gaussian radius 1 and 4
-# (the SAT box 3 and 9 texels), both filters, 2 timed frames, a 192² image. (Sized to finish in
-# ~20 minutes on a loaded 2-core machine; widen it with extra options, e.g. --map-sizes.)
+# (the SAT box 3 and 9 texels), both filters, 2 timed frames, a 192² image: 148 rows a scene,
+# 112 of them lighting with a raw map an earlier row rendered. (About 35 minutes on a loaded
+# 2-core machine; widen it with extra options, e.g. --radii 1,2,4,8,16.)
 SWEEP=(--map-sizes 256,512,1024,2048 --radii 1,4 --filters gaussian,sat --repeats 2 --image 192)
 QUICK=0
 if [ "${1:-}" = --quick ]; then
