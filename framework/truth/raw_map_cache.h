@@ -17,7 +17,8 @@ namespace sl {
 struct SharedRawMap {
     RawShadowMap map;                  // the light's raw map, as read back (renderer.h)
     std::string sourceRow;             // the study row (StudyRow::key) that rendered it
-    std::vector<double> shadowMillis;  // that row's shadow-pass time in each timed frame, ms
+    // That row's shadow-pass times in each timed frame (one per shadow pass of the light), ms.
+    std::vector<std::vector<double>> shadowMillis;
 };
 
 class RawMapCache {

@@ -315,24 +315,27 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             }
         }
         std::vector<std::vector<double>> passMs(plan.passes.size());
-        std::vector<double> frames, shadowMs;
+        std::vector<double> frames;
+        std::vector<std::vector<double>> shadowMs;  // per frame, each of the light's shadow passes
         for (int k = 0; k < std::max(o.repeats, 1); ++k) {
             result = solution.render(s, plan, inputs);
-            double frame = 0, shadowFrame = 0;
+            double frame = 0;
+            shadowMs.emplace_back();
             for (size_t p = 0; p < plan.passes.size(); ++p) {
                 double ms = result.passMillis.at(p);
                 if (isShadowPass(p)) {
-                    if (given)
-                        ms = given->shadowMillis.empty()
-                                 ? 0.0
-                                 : given->shadowMillis[size_t(k) % given->shadowMillis.size()];
-                    shadowFrame += ms;
+                    // The j-th shadow pass (a cascade's, the peel) takes the rendering row's j-th.
+                    const size_t j = shadowMs.back().size();
+                    if (given && !given->shadowMillis.empty()) {
+                        const auto& f = given->shadowMillis[size_t(k) % given->shadowMillis.size()];
+                        ms = j < f.size() ? f[j] : 0.0;
+                    }
+                    shadowMs.back().push_back(ms);
                 }
                 passMs[p].push_back(ms);
                 frame += ms;
             }
             frames.push_back(frame);
-            shadowMs.push_back(shadowFrame);
         }
         if (pendingKeep) {
             pendingKeep->shadowMillis = shadowMs;
