@@ -10,6 +10,7 @@
 #include "render_output.h"
 #include "renderer.h"
 #include "scene.h"
+#include "scene_size.h"
 #include "technique.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -88,9 +89,10 @@ void writeSheetHtml(const fs::path& outDir, const Scene& scene,
 }
 
 int runCompare(const std::string& scenePath, const std::string& techniques,
-               const std::string& solution, const std::string& outDir, int columns,
+               const std::string& solution, const std::string& outDir, int columns, int size,
                const std::string& backend) {
-    const Scene loaded = loadScene(scenePath);
+    Scene loaded = loadScene(scenePath);
+    if (size > 0) scaleScene(loaded, size);  // a small sheet: the map and filters scale too
     std::vector<std::string> specs;
     if (techniques == "all") {
         specs = techniqueNames();
@@ -145,7 +147,7 @@ void addCompareCommand(CLI::App& app, Context& ctx) {
     auto* compare = app.add_subcommand("compare", "render a scene with several techniques, side by side");
     struct Args {
         std::string scene, techniques = "all", solution = "reference", out = "out/compare";
-        int columns = 4;
+        int columns = 4, size = 0;
     };
     auto a = std::make_shared<Args>();
     compare->add_option("--scene", a->scene, "scene JSON file")->required();
@@ -154,8 +156,12 @@ void addCompareCommand(CLI::App& app, Context& ctx) {
     compare->add_option("--solution", a->solution, "whose stages the msm4 row runs");
     compare->add_option("--out", a->out, "output folder");
     compare->add_option("--columns", a->columns, "images per row of the sheet")->check(CLI::Range(1, 16));
+    compare->add_option("--size", a->size,
+                        "image width in pixels (shadow map and filter widths scale with it); "
+                        "default: the scene's")->check(CLI::Range(32, 4096));
     compare->callback([a, &ctx] {
-        ctx.exitCode = runCompare(a->scene, a->techniques, a->solution, a->out, a->columns, ctx.backend);
+        ctx.exitCode = runCompare(a->scene, a->techniques, a->solution, a->out, a->columns, a->size,
+                                  ctx.backend);
     });
 }
 
