@@ -1,6 +1,7 @@
 // Renderer's filter passes: copy, separable Gaussian (student RGBA32F and any-format framework
 // variants), summed-area tables (student and double-float framework) and the SAT resolve.
 // One dispatch each; the benchmark and the grader call them directly.
+#include "render_internal.h"
 #include "renderer.h"
 
 #include <algorithm>
@@ -9,6 +10,8 @@
 #include <string>
 
 namespace sl {
+
+using render_detail::imageFormat;
 namespace {
 
 // A Gaussian pass's dispatch (docs/stage_contract.md, "Invocation mapping"): each invocation
@@ -24,16 +27,6 @@ void dispatchTexelRuns(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction
     gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-// GLSL image format qualifier of a map format (the formats mapLayout() gives techniques).
-std::string formatQualifier(GLenum format) {
-    switch (format) {
-        case GL_R32F: return "r32f";
-        case GL_RG32F: return "rg32f";
-        case GL_RGBA32F: return "rgba32f";
-        case GL_RGBA16: return "rgba16";
-    }
-    throw std::logic_error("no image format for texture format " + std::to_string(format));
-}
 
 }  // namespace
 
@@ -99,7 +92,7 @@ void Renderer::techniqueGaussianPass(const Texture& src, const Texture& dst, int
     // One program per (format, radius), like the student's per radius: a compile-time radius
     // lets llvmpipe unroll the taps and keep the register tile in registers.
     GlProgram& p = program("techniques/filter_gaussian.comp", "",
-                           {"SL_MAP_FORMAT=" + formatQualifier(src.format),
+                           {"SL_MAP_FORMAT=" + imageFormat(src.format),
                             "SL_BLUR_RADIUS=" + std::to_string(radius)});
     p.use();
     p.set("uRadius", radius);

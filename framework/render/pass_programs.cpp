@@ -1,13 +1,15 @@
 // Renderer's programs: which files and permutation each pass kind compiles, built on first use.
+#include "render_internal.h"
 #include "renderer.h"
 
 #include <stdexcept>
 
 namespace sl {
-namespace {
 
-// GLSL image format qualifier of a texture format.
-std::string imageFormat(GLenum format) {
+using render_detail::imageFormat;
+
+// GLSL image format qualifier of a texture format (render_internal.h).
+std::string render_detail::imageFormat(GLenum format) {
     switch (format) {
         case GL_R32F: return "r32f";
         case GL_RG32F: return "rg32f";
@@ -16,8 +18,6 @@ std::string imageFormat(GLenum format) {
     }
     throw std::logic_error("no image format for texture format " + std::to_string(format));
 }
-
-}  // namespace
 
 GlProgram& Renderer::program(const std::string& first, const std::string& fragment,
                              const std::vector<std::string>& defines) {

@@ -1,4 +1,4 @@
-// Internal to the renderer's files (renderer.cpp, scene_passes.cpp, render_readback.cpp): the
+// Internal to the renderer's files (renderer.cpp, scene_passes.cpp, render_readback.cpp, ...): the
 // per-light textures a render allocates and the helpers its stages share. Not a public API.
 #pragma once
 
@@ -60,5 +60,8 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
                      const std::vector<LightView>& views, ShadowMapSet& maps,
                      bool studentStages, const SceneGeometry& geometry, Texture& color,
                      Texture& shadow, Texture& depth);
+
+// GLSL image format qualifier of a map format ("r32f", "rgba16", ...); pass_programs.cpp.
+std::string imageFormat(GLenum format);
 
 }  // namespace sl::render_detail
