@@ -1,6 +1,7 @@
 // grade: one submission, end to end. Intake, then the reference renders (or the goldens),
 // then one child process per (scene, stage), two at a time, then the comparisons, the
 // results.json and the report. Whatever happens, results.json is written.
+#include "gl_context.h"
 #include "golden.h"
 #include "grader.h"
 #include "intake.h"
@@ -481,6 +482,7 @@ GradeSummary gradeSubmission(const GradeOptions& o) {
         std::error_code ec;
         fs::create_directories(o.out, ec);
         Rubric rubric = loadRubric(o.rubric.empty() ? repoRoot() / "grader" / "rubric.json" : o.rubric);
+        preloadDriver(parseBackendKind(o.backend));  // once here, not in every forked child
         s = Grading(o, rubric).run();
         s.seconds = seconds();
         writeResults(results, resultsJson(s, rubric));

@@ -2,6 +2,7 @@
 // a batch shares.
 #include "jobs.h"
 
+#include "gl_context.h"
 #include "paths.h"
 #include "shader_source.h"
 #include "worker.h"
@@ -131,6 +132,7 @@ void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
         specs.back().group.clear();
     }
     nlohmann::json times = nlohmann::json::object();
+    preloadDriver(parseBackendKind(o.backend));  // once here, not in every forked child
     const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
     std::error_code ec;
     fs::remove_all(workDir(o), ec);  // the shader cache of these renders

@@ -5,6 +5,7 @@
 //   info    prints the GL backend, renderer and Mesa version
 #include "cli_commands.h"
 #include "gl_context.h"
+#include "huge_pages.h"
 #include "image_io.h"
 #include "pass_plan.h"
 #include "paths.h"
@@ -119,7 +120,8 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
         auto context = createContext(parseBackendKind(ctx.backend));
         const auto& i = context->info();
         std::cout << "backend:  " << i.backend << "\nrenderer: " << i.renderer
-                  << "\nversion:  " << i.version << "\nmesa:     " << i.mesaVersion << "\n";
+                  << "\nversion:  " << i.version << "\nmesa:     " << i.mesaVersion
+                  << "\nhuge pages: " << hugePagesState() << "\n";
         ctx.exitCode = Ok;
     });
 }

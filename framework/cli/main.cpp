@@ -4,6 +4,7 @@
 // that renders; the kit's root (paths.h) is reported by info and grade.
 #include "cli_commands.h"
 #include "gl_context.h"
+#include "huge_pages.h"
 #include "paths.h"
 #include "scene.h"
 #include "shader_source.h"
@@ -31,6 +32,7 @@ void addBackendOption(CLI::App& app, std::string& backend) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    sl::cli::useHugePages(argv);  // may re-execute this program once (huge_pages.h)
     CLI::App app{"Shadowlab: filtered moment shadow maps on Mesa's software rasterizer"};
     app.require_subcommand(1);
     sl::cli::Context ctx;

@@ -56,6 +56,10 @@ std::unique_ptr<GlContext> createContext(BackendKind kind) {
         "libgl1-mesa-dri (or run ./kit, which does it)");
 }
 
+bool preloadDriver(BackendKind kind) {
+    return kind != BackendKind::Egl && preloadOSMesa();
+}
+
 void GlContext::activate() {
     makeCurrent();
     ContextInfo info = info_;

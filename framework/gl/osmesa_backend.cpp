@@ -18,22 +18,25 @@ using MakeCurrentFn = GLboolean (*)(OSMesaContext, void*, GLenum, GLsizei, GLsiz
 using DestroyContextFn = void (*)(OSMesaContext);
 using GetProcAddressFn = OSMESAproc (*)(const char*);
 
+// Loads libOSMesa (RTLD_NOW | RTLD_LOCAL) or throws BackendError naming the package. Loading
+// it again returns the same handle: the library stays loaded for the process's lifetime.
+void* loadOSMesa() {
+    // $SHADOWLAB_OSMESA_LIBRARY names a libOSMesa outside the loader's path.
+    std::vector<std::string> names = {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so"};
+    if (const char* path = std::getenv("SHADOWLAB_OSMESA_LIBRARY"); path && *path)
+        names = {path};
+    std::string errors;
+    for (const auto& name : names) {
+        if (void* library = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL)) return library;
+        errors += std::string(" ") + dlerror() + ";";
+    }
+    throw BackendError("cannot load libOSMesa (" + errors + ") — apt-get install libosmesa6");
+}
+
 class OSMesaContextImpl final : public GlContext {
 public:
     OSMesaContextImpl() {
-        // $SHADOWLAB_OSMESA_LIBRARY names a libOSMesa outside the loader's path.
-        std::vector<std::string> names = {"libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so"};
-        if (const char* path = std::getenv("SHADOWLAB_OSMESA_LIBRARY"); path && *path)
-            names = {path};
-        std::string errors;
-        for (const auto& name : names) {
-            library_ = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
-            if (library_) break;
-            errors += std::string(" ") + dlerror() + ";";
-        }
-        if (!library_)
-            throw BackendError("cannot load libOSMesa (" + errors +
-                               ") — apt-get install libosmesa6");
+        library_ = loadOSMesa();
         create_ = reinterpret_cast<CreateContextAttribsFn>(
             dlsym(library_, "OSMesaCreateContextAttribs"));
         makeCurrent_ = reinterpret_cast<MakeCurrentFn>(dlsym(library_, "OSMesaMakeCurrent"));
@@ -81,6 +84,15 @@ private:
 
 std::unique_ptr<GlContext> createOSMesaContext() {
     return std::make_unique<OSMesaContextImpl>();
+}
+
+bool preloadOSMesa() {
+    try {
+        loadOSMesa();
+        return true;
+    } catch (const BackendError&) {
+        return false;
+    }
 }
 
 }  // namespace sl

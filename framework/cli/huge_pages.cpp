@@ -1,0 +1,56 @@
+// huge_pages: see huge_pages.h.
+#include "huge_pages.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace sl::cli {
+namespace {
+
+// The kernel's transparent huge page mode: "always", "madvise", "never" ("" if unknown).
+std::string transparentHugePageMode() {
+    std::string line;
+    std::getline(std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled"), line);
+    const auto open = line.find('['), close = line.find(']');
+    return open == std::string::npos || close < open ? "" : line.substr(open + 1, close - open - 1);
+}
+
+bool turnedOff() {
+    const char* off = std::getenv("SHADOWLAB_HUGE_PAGES");
+    return off && std::string(off) == "0";
+}
+
+std::string tunables() {
+    const char* t = std::getenv("GLIBC_TUNABLES");
+    return t ? t : "";
+}
+
+}  // namespace
+
+void useHugePages(char** argv) {
+    const std::string before = tunables();
+    if (turnedOff() || before.find("glibc.malloc.hugetlb") != std::string::npos) return;
+    if (transparentHugePageMode() != "madvise") return;
+    const std::string value = before + (before.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
+    ::setenv("GLIBC_TUNABLES", value.c_str(), 1);
+    ::execv("/proc/self/exe", argv);  // returns only on failure: then run as we are
+    if (before.empty())
+        ::unsetenv("GLIBC_TUNABLES");
+    else
+        ::setenv("GLIBC_TUNABLES", before.c_str(), 1);
+}
+
+std::string hugePagesState() {
+    const std::string mode = transparentHugePageMode();
+    if (mode == "always") return "on (transparent huge pages: always)";
+    if (mode != "madvise") return "off (transparent huge pages: " + (mode.empty() ? "none" : mode) + ")";
+    if (tunables().find("glibc.malloc.hugetlb=1") != std::string::npos)
+        return "on (glibc.malloc.hugetlb=1, transparent huge pages: madvise)";
+    if (turnedOff()) return "off (SHADOWLAB_HUGE_PAGES=0)";
+    return "off (GLIBC_TUNABLES=" + tunables() + ")";
+}
+
+}  // namespace sl::cli
