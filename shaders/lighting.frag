@@ -56,6 +56,13 @@ uniform float uMomentBias;  // α, handed to msm.glsl
 
 #define SL_MAX_LIGHTS 4
 #define SL_MAX_CASCADES 4  // per light; a light's maps are "slots" SL_MAX_CASCADES·i + c
+// How many slots have maps (the renderer's lightingProgram sets it from the plan). With one,
+// that slot's maps start at unit 0, a constant: llvmpipe then reads one known sampler instead
+// of switching over the sampler array at every texelFetch (about a third of the SAT lookup's
+// lighting pass). Unset: any number, the index a uniform.
+#ifndef SL_SHADOW_SLOTS
+#define SL_SHADOW_SLOTS (SL_MAX_LIGHTS * SL_MAX_CASCADES)
+#endif
 
 in vec3 vWorldPosition;
 in vec3 vWorldNormal;
@@ -106,23 +113,23 @@ int shadowSlot(int i, vec3 p) {
     float depth = dot(p - uCascadeCameraPosition, uCascadeCameraForward);
     int c = 0;
     while (c < uLightCascades[i] - 1 && depth > uLightCascadeFar[i][c]) ++c;
-    for (; c < uLightCascades[i]; ++c) {
+    do {  // c < uLightCascades[i] here: test at the end (no masked extra pass, see main)
         vec4 clip = uSlotViewProjection[first + c] * vec4(p, 1.0);
         if (all(lessThanEqual(abs(clip.xy / clip.w), vec2(1.0)))) return first + c;
-    }
+        ++c;
+    } while (c < uLightCascades[i]);
     return -1;
 }
 
 #ifdef SL_TECHNIQUE_MSM4
-// G for light i at world position p from the map in `slot`; 0 outside its frustum.
-float shadowIntensityAt(int i, int slot, vec3 p) {
+// G for light i at world position p from the map in `slot`, unit `map`; 0 outside its frustum.
+float shadowIntensityAt(int i, int slot, int map, vec3 p) {
     vec4 clip = uSlotViewProjection[slot] * vec4(p, 1.0);
     vec3 ndc = clip.xyz / clip.w;
     if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
     vec2 uv = ndc.xy * 0.5 + 0.5;
     float lightDepth = dot(p - uLightEye[i], uLightForward[i]);
     float zf = relativeDepth(lightDepth, uLightDepthRange[i]) - uDepthBias;
-    int map = uSlotShadowMap[slot];
 #ifdef SL_FILTER_SAT
     vec2 size = vec2(textureSize(uShadowMaps[map], 0));
     vec4 b = satBoxAverage(uShadowMaps[map], uv * size, vec2(uSatKernel));
@@ -132,9 +139,9 @@ float shadowIntensityAt(int i, int slot, vec3 p) {
     return momentShadowIntensity(b, zf);
 }
 #else
-// G for light i at world position p from the technique's row and the map in `slot`; 0
-// outside its frustum.
-float shadowIntensityAt(int i, int slot, vec3 p) {
+// G for light i at world position p from the technique's row and the maps in `slot`, from
+// unit `map` on; 0 outside its frustum.
+float shadowIntensityAt(int i, int slot, int map, vec3 p) {
     vec3 n = normalize(vWorldNormal);
     vec3 l = uLightIsSpot[i] != 0 ? normalize(uLightEye[i] - p) : -uLightForward[i];
     float cosTheta = clamp(abs(dot(n, l)), 1e-4, 1.0);
@@ -146,7 +153,7 @@ float shadowIntensityAt(int i, int slot, vec3 p) {
     vec3 ndc = clip.xyz / clip.w;
     if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
     ShadowQuery q;
-    q.map = uSlotShadowMap[slot];
+    q.map = map;
     q.uv = ndc.xy * 0.5 + 0.5;
     q.receiverDepth = dot(p - uLightEye[i], uLightForward[i]);
     q.depthRange = uLightDepthRange[i];
@@ -164,14 +171,26 @@ float shadowIntensityAt(int i, int slot, vec3 p) {
 // G for light i at world position p, from the map (cascade) that covers p. Sampler arrays take
 // dynamically uniform indices only (llvmpipe shades a SIMD group with one index): so the loop
 // runs over the light's slots, a uniform count, and shades with the one chosen, so that every
-// map index is the loop's, never a per-pixel value.
+// map index is the loop's, never a per-pixel value. With a single slot there is nothing to
+// choose, and its maps start at the constant unit 0.
 float shadowIntensity(int i, vec3 p) {
+#if SL_SHADOW_SLOTS == 0
+    return 0.0;  // no light has a map; llvmpipe would still run a lookup here, masked off
+#elif SL_SHADOW_SLOTS == 1
+    return shadowIntensityAt(i, SL_MAX_CASCADES * i, 0, p);
+#else
     int slot = shadowSlot(i, p);
     float G = 0.0;
-    int first = SL_MAX_CASCADES * i;
-    for (int s = first; s < first + max(uLightCascades[i], 1); ++s)
-        if (s == slot) G = shadowIntensityAt(i, s, p);
+    int s = SL_MAX_CASCADES * i;
+    int end = s + max(uLightCascades[i], 1);
+    // do-while, not for: llvmpipe runs a for loop's body once more, all lanes masked off, after
+    // the last iteration (a whole shadow lookup for nothing); a light has at least one slot.
+    do {
+        if (s == slot) G = shadowIntensityAt(i, s, uSlotShadowMap[s], p);
+        ++s;
+    } while (s < end);
     return G;
+#endif
 }
 
 void main() {
@@ -182,7 +201,10 @@ void main() {
     float firstShadow = 0.0;
     bool firstSeen = false;
     bool broken = false;
-    for (int i = 0; i < uLightCount; ++i) {
+    // do-while, not for: llvmpipe runs a for loop's body once more, all lanes masked off, after
+    // the last light, and that body holds the whole shadow lookup (it doubled the pass).
+    int i = 0;
+    if (uLightCount > 0) do {
         vec3 l = uLightIsSpot[i] != 0 ? normalize(uLightEye[i] - vWorldPosition)
                                       : -uLightForward[i];
         float cone = 1.0;
@@ -201,7 +223,8 @@ void main() {
         float diffuse = max(dot(n, l), 0.0);
         float specular = diffuse > 0.0 ? uSpecular * pow(max(dot(n, h), 0.0), uShininess) : 0.0;
         color += (1.0 - G) * cone * uLightColor[i] * (diffuse * uAlbedo + specular);
-    }
+        ++i;
+    } while (i < uLightCount);
     outColor = broken ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(color, 1.0);
     outShadow = firstShadow;
 }
