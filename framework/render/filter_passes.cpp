@@ -11,7 +11,6 @@
 
 namespace sl {
 
-using render_detail::imageFormat;
 namespace {
 
 // A Gaussian pass's dispatch (docs/stage_contract.md, "Invocation mapping"): each invocation
@@ -89,11 +88,7 @@ const BufferHandle& Renderer::weightsBuffer(int radius, float sigma) {
 
 void Renderer::techniqueGaussianPass(const Texture& src, const Texture& dst, int radius,
                                      float sigma, glm::ivec2 direction) {
-    // One program per (format, radius), like the student's per radius: a compile-time radius
-    // lets llvmpipe unroll the taps and keep the register tile in registers.
-    GlProgram& p = program("techniques/filter_gaussian.comp", "",
-                           {"SL_MAP_FORMAT=" + imageFormat(src.format),
-                            "SL_BLUR_RADIUS=" + std::to_string(radius)});
+    GlProgram& p = techniqueProgram(PassKind::GaussianX, false, src.format, radius, {});
     p.use();
     p.set("uRadius", radius);
     p.set("uDirection", direction);
@@ -108,7 +103,7 @@ void Renderer::techniqueSatPass(const Texture& src, const Texture& hi, const Tex
                                 glm::ivec2 direction) {
     const bool rows = direction.x == 1;
     GlProgram& p = techniqueProgram(rows ? PassKind::SatRows : PassKind::SatColumns, false,
-                                    src.format, {});
+                                    src.format, 0, {});
     p.use();
     p.set("uImageSize", glm::ivec2(hi.width, hi.height));
     if (rows) gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, src.format);

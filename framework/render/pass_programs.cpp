@@ -1,8 +1,11 @@
 // Renderer's programs: which files and permutation each pass kind compiles, built on first use.
 #include "render_internal.h"
 #include "renderer.h"
+#include "technique.h"
 
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 namespace sl {
 
@@ -52,15 +55,19 @@ GlProgram& Renderer::passProgram(PassKind kind, int blurRadius,
 }
 
 GlProgram& Renderer::techniqueProgram(PassKind kind, bool studentStages, unsigned mapFormat,
-                                      const std::vector<std::string>& defines) {
-    if (studentStages || kind == PassKind::Lighting) return passProgram(kind, 0, defines);
+                                      int blurRadius, const std::vector<std::string>& defines) {
+    if (studentStages || kind == PassKind::Lighting) return passProgram(kind, blurRadius, defines);
     const std::string format = "SL_MAP_FORMAT=" + imageFormat(mapFormat);
     switch (kind) {
         case PassKind::Shadow: return program("scene.vert", "techniques/store.frag", defines);
         case PassKind::ShadowSecond:
             return program("scene.vert", "techniques/second_depth_peel.frag", defines);
         case PassKind::GaussianX:
-        case PassKind::GaussianY: return program("techniques/filter_gaussian.comp", "", {format});
+        case PassKind::GaussianY:
+            // One program per (format, radius), like the student's per radius: a compile-time
+            // radius lets llvmpipe unroll the taps and keep the register tile in registers.
+            return program("techniques/filter_gaussian.comp", "",
+                           {format, "SL_BLUR_RADIUS=" + std::to_string(blurRadius)});
         case PassKind::SatResolve: return program("techniques/sat_resolve.comp", "", {format});
         case PassKind::SatRows:
         case PassKind::SatColumns: {
@@ -73,6 +80,28 @@ GlProgram& Renderer::techniqueProgram(PassKind kind, bool studentStages, unsigne
         default: break;
     }
     throw std::logic_error(std::string("no framework program for pass ") + toString(kind));
+}
+
+void Renderer::compilePrograms(const Scene& scene, const PassPlan& plan) {
+    const ShadowEffect& fx = scene.shadow;
+    const bool studentStages = techniqueRow(fx.technique).studentStages;
+    const unsigned format = mapLayout(fx).glFormat;
+    // The very programs the passes take: the Gaussians' with the scene's radius (a
+    // compile-time constant), the lighting's for the plan.
+    for (const PlannedPass& pass : plan.passes) {
+        if (pass.kind == PassKind::Lighting) lightingProgram(plan);
+        else techniqueProgram(pass.kind, studentStages, format, fx.gaussianRadius, plan.defines);
+    }
+}
+
+GlProgram& Renderer::lightingProgram(const PassPlan& plan) {
+    // The slots (light, cascade) with maps, as the renderer allocates them.
+    std::set<std::pair<int, int>> slots;
+    for (int light : plan.shadowLights) slots.insert({light, 0});
+    for (const PlannedCascade& c : plan.cascades) slots.insert({c.light, c.cascade});
+    std::vector<std::string> defines = plan.defines;
+    defines.push_back("SL_SHADOW_SLOTS=" + std::to_string(slots.size()));
+    return passProgram(PassKind::Lighting, 0, defines);
 }
 
 }  // namespace sl

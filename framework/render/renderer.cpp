@@ -113,11 +113,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     struct CameraTargets { Texture color, shadow, depth; };
     std::map<int, CameraTargets> targets;
 
-    // Compile first, so that pass times measure rendering, not the driver's compiler.
-    for (const PlannedPass& pass : plan.passes) {
-        if (row.studentStages) passProgram(pass.kind, fx.gaussianRadius, defines);
-        else techniqueProgram(pass.kind, false, layout.glFormat, defines);
-    }
+    compilePrograms(scene, plan);  // so that pass times measure rendering, not the compiler
 
     gl::Enable(GL_DEPTH_TEST);
     gl::DepthFunc(GL_LESS);
@@ -136,7 +132,8 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             case PassKind::ShadowSecond: {
                 GlProgram& p = row.studentStages
                                    ? passProgram(PassKind::Shadow, 0, defines)
-                                   : techniqueProgram(pass.kind, false, layout.glFormat, defines);
+                                   : techniqueProgram(pass.kind, false, layout.glFormat, 0,
+                                                      defines);
                 runShadowPass(p, pass.kind == PassKind::ShadowSecond, *m, clear, fx,
                               row.studentStages, geometry);
                 break;
@@ -195,7 +192,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 break;
             case PassKind::Lighting: {
                 CameraTargets& t = targets[pass.camera];
-                runLightingPass(passProgram(PassKind::Lighting, 0, defines), scene, plan,
+                runLightingPass(lightingProgram(plan), scene, plan,
                                 scene.cameras.at(pass.camera), views, maps, row.studentStages,
                                 geometry, t.color, t.shadow, t.depth);
                 break;

@@ -77,6 +77,11 @@ public:
     //   RenderResult other = renderer.render(sceneWithAnotherFilter, planPasses(...), shared);
     RenderResult render(const Scene& scene, const PassPlan& plan,
                         const RenderInputs& inputs = {});
+    // Compiles every program `plan` runs, as its passes will ask for them (render does this
+    // first, so that pass times measure rendering, not the driver's compiler).
+    void compilePrograms(const Scene& scene, const PassPlan& plan);
+    // How many programs are compiled so far (one per files and defines).
+    size_t programCount() const { return programs_.size(); }
 
     // One dispatch each, src -> dst (both RGBA32F, same size). Compile on first use.
     void copyPass(const Texture& src, const Texture& dst);
@@ -99,9 +104,13 @@ private:
     // `blurRadius`: Gaussian passes; `defines`: the technique/filter ones of the scene.
     GlProgram& passProgram(PassKind kind, int blurRadius, const std::vector<std::string>& defines);
     // The framework's programs of the techniques other than msm4 (shaders/techniques/): their
-    // maps are not RGBA32F, so the student's filter stages cannot run on them.
+    // maps are not RGBA32F, so the student's filter stages cannot run on them. `blurRadius`:
+    // Gaussian passes (a compile-time constant of both Gaussians).
     GlProgram& techniqueProgram(PassKind kind, bool studentStages, unsigned mapFormat,
-                                const std::vector<std::string>& defines);
+                                int blurRadius, const std::vector<std::string>& defines);
+    // The lighting pass's program for `plan`: its defines plus how many light/cascade slots
+    // have maps (SL_SHADOW_SLOTS, lighting.frag).
+    GlProgram& lightingProgram(const PassPlan& plan);
     // Any map format: the same Gaussian weights as gaussianPass, src -> dst.
     void techniqueGaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
                                glm::ivec2 direction);

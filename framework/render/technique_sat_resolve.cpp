@@ -7,7 +7,7 @@ namespace sl {
 
 void Renderer::techniqueSatResolvePass(const Texture& hi, const Texture& lo, const Texture& dst,
                                        float kernelTexels) {
-    GlProgram& p = techniqueProgram(PassKind::SatResolve, false, dst.format, {});
+    GlProgram& p = techniqueProgram(PassKind::SatResolve, false, dst.format, 0, {});
     p.use();
     p.setArray("uShadowMaps", std::vector<int>{0, 1});
     p.set("uMapTexels", glm::vec2(float(dst.width), float(dst.height)));
