@@ -1,6 +1,8 @@
 // test_bench_report: what `shadowlab bench` reports, checked on a tiny texture: a stubbed stage
 // says "not implemented" (no ✓), an implemented one gets a ratio with its spread and a
-// verdict against the goal, and --json carries the same rows. No speed is asserted here:
+// verdict against the goal, every row measured in copies is also put against the tiled copy
+// (the right baseline, as many passes of it as of the copy), and --json carries the same rows
+// and fields. No speed is asserted here:
 // timings belong to the Bench* suites (CTest label `bench`, run by `./kit bench`).
 #include "filter_benchmark.h"
 #include "gl_test_support.h"
@@ -99,8 +101,103 @@ TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
     ASSERT_EQ(json["rows"].size(), report.rows.size());
     const auto& first = json["rows"][1];
     EXPECT_EQ(first["pass"], report.rows[1].name);
-    for (const char* key : {"ratio", "ratioMin", "ratioMax", "goal", "implemented", "verdict"})
+    for (const char* key : {"ratio", "ratioMin", "ratioMax", "goal", "implemented", "verdict",
+                            "tileBaselineMs", "tileRatio"})
         EXPECT_TRUE(first.contains(key)) << key;
+}
+
+// The tiled copy's row, found by its name "copy, N texels per invocation".
+const BenchRow* tileCopyRow(const BenchReport& report) {
+    return findRow(report, "copy, " + std::to_string(report.tileCopyTexels) +
+                               " texels per invocation");
+}
+
+TEST(FilterBenchmark, EveryCopyMeasuredRowIsAlsoAgainstTheTiledCopy) {
+    test::sharedContext();
+    Renderer renderer(test::library("reference"));
+    const BenchReport report = runFilterBenchmark(renderer, 32, 3);
+    ASSERT_GT(report.tileCopyTexels, 1);
+    const BenchRow* tile = tileCopyRow(report);
+    ASSERT_NE(tile, nullptr) << formatBenchReport(report);
+    ASSERT_EQ(&report.rows[1], tile);  // the second floor, right under the copy
+    const BenchRow& copy = report.rows[0];
+    EXPECT_DOUBLE_EQ(copy.medianMs, report.copyMedianMs);
+    EXPECT_DOUBLE_EQ(tile->medianMs, report.tileCopyMedianMs);
+    // The tiled copy against the copy (verdict's column) and against itself.
+    EXPECT_EQ(tile->baseline, "copy");
+    EXPECT_DOUBLE_EQ(tile->ratio, report.tileCopyMedianMs / report.copyMedianMs);
+    EXPECT_DOUBLE_EQ(tile->tileRatio, 1.0);
+    EXPECT_DOUBLE_EQ(copy.tileRatio, report.copyMedianMs / report.tileCopyMedianMs);
+    // Each filter row: the verdict's ratio against `copies` copies, the tiled one against as
+    // many tiled copies (the SAT row against two of each).
+    for (const char* name : {"gaussian r=4, x", "gaussian r=8, y", "gaussian r=16, x",
+                             "sat, rows + columns"}) {
+        const BenchRow* row = findRow(report, name);
+        ASSERT_NE(row, nullptr) << name;
+        const double copies = row->baseline == "2 copies" ? 2 : 1;
+        EXPECT_DOUBLE_EQ(row->baselineMs, copies * report.copyMedianMs) << name;
+        EXPECT_DOUBLE_EQ(row->tileBaselineMs, copies * report.tileCopyMedianMs) << name;
+        EXPECT_DOUBLE_EQ(row->tileRatio, row->medianMs / row->tileBaselineMs) << name;
+        EXPECT_DOUBLE_EQ(row->ratio, row->medianMs / row->baselineMs) << name;
+    }
+    EXPECT_EQ(findRow(report, "sat, rows + columns")->baseline, "2 copies");
+
+    const auto json = nlohmann::json::parse(benchReportJson(report));
+    EXPECT_EQ(json["tileCopyTexels"], report.tileCopyTexels);
+    EXPECT_DOUBLE_EQ(json["tileCopyMs"].get<double>(), report.tileCopyMedianMs);
+    EXPECT_DOUBLE_EQ(json["copyMs"].get<double>(), report.copyMedianMs);
+    for (size_t i = 0; i < report.rows.size(); ++i) {
+        EXPECT_DOUBLE_EQ(json["rows"][i]["tileRatio"].get<double>(), report.rows[i].tileRatio)
+            << report.rows[i].name;
+        EXPECT_DOUBLE_EQ(json["rows"][i]["tileBaselineMs"].get<double>(),
+                         report.rows[i].tileBaselineMs)
+            << report.rows[i].name;
+    }
+}
+
+// The table's last column is the tiled ratio, "–" for a row not measured in copies; JSON null.
+TEST(FilterBenchmark, TableAndJsonCarryTheTiledRatioColumn) {
+    BenchReport report;
+    report.size = 32;
+    report.repeats = 3;
+    report.copyMedianMs = 2.0;
+    report.tileCopyMedianMs = 1.0;
+    report.tileCopyTexels = 4;
+    BenchRow gaussian;
+    gaussian.name = "gaussian r=8, x";
+    gaussian.medianMs = 1.5;
+    gaussian.baselineMs = 2.0;
+    gaussian.ratio = 0.75;
+    gaussian.ratioMin = 0.7;
+    gaussian.ratioMax = 0.8;
+    gaussian.goal = 1.3;
+    gaussian.baseline = "copy";
+    gaussian.tileBaselineMs = 1.0;
+    gaussian.tileRatio = 1.5;
+    BenchRow lighting;
+    lighting.name = "sat lookup, lighting pass (x)";
+    lighting.medianMs = 3.0;
+    lighting.baselineMs = 3.0;
+    lighting.ratio = 1.0;
+    lighting.ratioMin = 1.0;
+    lighting.ratioMax = 1.0;
+    lighting.goal = 1.2;
+    lighting.baseline = "bilinear fetch";
+    report.rows = {gaussian, lighting};
+
+    const std::string table = formatBenchReport(report);
+    EXPECT_NE(table.find("| pass | median ms | baseline | ratio | spread | goal | tiled |"),
+              std::string::npos) << table;
+    EXPECT_NE(table.find("| gaussian r=8, x | 1.50 | copy | 0.75 | 0.70–0.80 | ✓ ≤ 1.3 | 1.50 |"),
+              std::string::npos) << table;
+    EXPECT_NE(table.find("| bilinear fetch | 1.00 | 1.00–1.00 | ✓ ≤ 1.2 | – |"),
+              std::string::npos) << table;
+    EXPECT_NE(table.find("4-texel copy"), std::string::npos) << table;
+
+    const auto json = nlohmann::json::parse(benchReportJson(report));
+    EXPECT_DOUBLE_EQ(json["rows"][0]["tileRatio"].get<double>(), 1.5);
+    EXPECT_TRUE(json["rows"][1]["tileRatio"].is_null());
+    EXPECT_TRUE(json["rows"][1]["tileBaselineMs"].is_null());
 }
 
 TEST(FilterBenchmark, CommandPrintsJsonWhenAskedWithoutAFile) {
@@ -110,6 +207,8 @@ TEST(FilterBenchmark, CommandPrintsJsonWhenAskedWithoutAFile) {
     const auto json = nlohmann::json::parse(r.output.substr(r.output.find('{')));
     EXPECT_EQ(json["size"], 32);
     EXPECT_EQ(json["rows"][0]["pass"], "copy");
+    EXPECT_EQ(json["rows"][1]["pass"], "copy, " + std::to_string(json["tileCopyTexels"].get<int>()) +
+                                           " texels per invocation");
 }
 
 }  // namespace
