@@ -1,5 +1,7 @@
-// cli_bench: `shadowlab bench`: times a solution's filter passes against a copy pass, and its
-// SAT lookup's lighting pass against a bilinear fetch (filter_benchmark.h, docs/performance.md).
+// cli_bench: `shadowlab bench`: times a solution's filter passes against a copy pass (the
+// verdict's yardstick, issue 10) and a tiled copy (the column "tiled": what moving the texels
+// costs on llvmpipe), and its SAT lookup's lighting pass against a bilinear fetch
+// (filter_benchmark.h, docs/performance.md).
 //   --json          print the figures as JSON instead of the table
 //   --json FILE     also write them to FILE
 #include "cli_commands.h"
@@ -45,7 +47,7 @@ int runBench(const BenchArgs& a, const std::string& backend) {
 
 void addBenchCommand(CLI::App& app, Context& ctx) {
     auto* bench = app.add_subcommand(
-        "bench", "time the filter passes against a copy pass, with spreads and goals");
+        "bench", "time the filter passes against a copy pass and a tiled copy, with spreads and goals");
     auto b = std::make_shared<BenchArgs>();
     bench->add_option("--size", b->size, "texture size (square, RGBA32F)")->check(CLI::Range(16, 4096));
     bench->add_option("--repeats", b->repeats, "measured repeats per pass")->check(CLI::Range(3, 1000));
