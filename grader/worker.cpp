@@ -14,7 +14,7 @@
 
 #include "grader.h"
 
-#include "cli_commands.h"
+#include "cli_exit_codes.h"
 #include "depth_ladder.h"
 #include "gl_context.h"
 #include "msm_robustness.h"

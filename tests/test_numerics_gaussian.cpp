@@ -12,7 +12,7 @@
 
 namespace sl {
 namespace {
-constexpr double u = 1.0 / (1 << 24);
+using oracle::u;  // float32's unit roundoff (moment_oracles.h)
 }  // namespace
 
 TEST(NumericsGaussian, WeightsSumToOneAtEveryRadiusUpTo64) {

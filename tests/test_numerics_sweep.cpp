@@ -18,9 +18,9 @@ namespace sl {
 namespace {
 
 constexpr int kVectors = 250000, kDepthsPerVector = 4;
-constexpr float kAlpha = kReferenceMomentBias;
+constexpr float kSweepAlpha = kReferenceMomentBias;
 // Stated bounds (docs/numerics.md). Monotone: G may drop by this much from rounding.
-constexpr float kMonotoneSlack = 1e-4f;
+constexpr float kSweepMonotoneSlack = 1e-4f;
 // In front of every occluder by >= kFrontMargin, the exact bound is <= α/2 (the bias's mass
 // at depth 0); float32 may add rounding.
 // float32 adds ~3e-5 for the far plane alone (b = (1, 1, 1, 1)): G <= 1e-4, invisible in 8 bits.
@@ -97,7 +97,7 @@ TEST(NumericsSweep, MillionCasesOnGpuAndCpuMirror) {
 
     test::sharedContext();
     auto t0 = std::chrono::steady_clock::now();
-    const std::vector<float> gpu = probeMomentShadowIntensity(test::library("reference"), c.b, c.zf, kAlpha);
+    const std::vector<float> gpu = probeMomentShadowIntensity(test::library("reference"), c.b, c.zf, kSweepAlpha);
     const double tGpu = seconds(t0);
 
     t0 = std::chrono::steady_clock::now();
@@ -111,26 +111,26 @@ TEST(NumericsSweep, MillionCasesOnGpuAndCpuMirror) {
         char buf[320];
         std::snprintf(buf, sizeof buf, "\n  %s: b = (%.9g, %.9g, %.9g, %.9g), zf = %.9g, G = %.9g (exact %.9g, sens %.3g)",
                       what.c_str(), c.b[i].x, c.b[i].y, c.b[i].z, c.b[i].w, c.zf[i], g,
-                      exactMomentShadowIntensity(glm::dvec4(c.b[i]), c.zf[i], kAlpha),
-                      msmFloatSensitivity(c.b[i], c.zf[i], kAlpha));
+                      exactMomentShadowIntensity(glm::dvec4(c.b[i]), c.zf[i], kSweepAlpha),
+                      msmFloatSensitivity(c.b[i], c.zf[i], kSweepAlpha));
         firstProblem += buf;
     };
     std::vector<float> cpu(n);
-    for (size_t i = 0; i < n; ++i) cpu[i] = mirror::momentShadowIntensity(c.b[i], c.zf[i], kAlpha);
+    for (size_t i = 0; i < n; ++i) cpu[i] = mirror::momentShadowIntensity(c.b[i], c.zf[i], kSweepAlpha);
     for (size_t i = 0; i < n; ++i) {
         const size_t v = i / kDepthsPerVector;
-        const double exact = exactMomentShadowIntensity(glm::dvec4(c.b[i]), c.zf[i], kAlpha);
+        const double exact = exactMomentShadowIntensity(glm::dvec4(c.b[i]), c.zf[i], kSweepAlpha);
         exactChecked += std::isfinite(exact);
         double sensitivity = -1;  // computed only where needed (18 exact solves)
         auto bound = [&] {
-            if (sensitivity < 0) sensitivity = msmFloatSensitivity(c.b[i], c.zf[i], kAlpha);
+            if (sensitivity < 0) sensitivity = msmFloatSensitivity(c.b[i], c.zf[i], kSweepAlpha);
             return kExactBase + 4 * sensitivity;
         };
         for (int side = 0; side < 2; ++side) {
             const float g = side == 0 ? gpu[i] : cpu[i];
             const char* who = side == 0 ? "GPU" : "CPU mirror";
             if (!(std::isfinite(g) && g >= 0.0f && g <= 1.0f)) ++bad[side], note(std::string(who) + " not in [0,1]", i, g);
-            if (i % kDepthsPerVector && g < (side == 0 ? gpu[i - 1] : cpu[i - 1]) - kMonotoneSlack)
+            if (i % kDepthsPerVector && g < (side == 0 ? gpu[i - 1] : cpu[i - 1]) - kSweepMonotoneSlack)
                 ++nonMonotone[side], note(std::string(who) + " non-monotone", i, g);
             if (c.zf[i] <= c.minDepth[v] - kFrontMargin && !c.perturbed[v] && g > kFrontMax)
                 ++frontLeak[side], note(std::string(who) + " G > 0 in front of every occluder", i, g);

@@ -12,7 +12,7 @@
 namespace sl {
 namespace {
 
-constexpr double u = 1.0 / (1 << 24);
+using oracle::u;  // float32's unit roundoff (moment_oracles.h)
 
 // A moment map's 4 channels, as the oracles take them.
 const std::vector<float>& px(const Image& img) { return img.pixels; }

@@ -16,9 +16,9 @@ std::vector<std::string> publicScenes() {
     return names;
 }
 
-class SceneRender : public ::testing::TestWithParam<std::string> {};
-
 }  // namespace
+
+class SceneRender : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SceneRender, ProbesHoldAndImagesAreFinite) {
     Scene scene = loadScene(test::scenePath(GetParam()));

@@ -2,13 +2,13 @@
 // grader/cli_*.cpp) adds its subcommands; main.cpp parses and maps errors to exit codes.
 #pragma once
 
+#include "cli_exit_codes.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
 
 namespace sl::cli {
-
-enum ExitCode { Ok = 0, Failed = 1, BadInput = 2, ShaderFailed = 3, NoBackend = 4 };
 
 // Shared by all subcommands; a subcommand's callback sets exitCode.
 struct Context {

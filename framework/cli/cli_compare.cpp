@@ -4,6 +4,7 @@
 // same sheet as an HTML page with every pass's format, memory and time.
 #include "cli_commands.h"
 #include "gl_context.h"
+#include "html_escape.h"
 #include "image_io.h"
 #include "pass_plan.h"
 #include "paths.h"
@@ -30,12 +31,6 @@ struct SheetEntry {
     double totalMs = 0.0;
     std::string passRows;  // HTML rows
 };
-
-std::string htmlEscape(const std::string& s) {
-    std::string out;
-    for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-    return out;
-}
 
 // The contact sheet: final images in a grid of `columns`, a label band above each. Labels need
 // OIIO built with FreeType and the DejaVu font; without them the grid stays unlabelled (the

@@ -139,7 +139,7 @@ std::vector<std::vector<float>> numericColumns(const Table& t, const std::string
     return values;
 }
 
-std::string num(double v) {
+std::string csvNumber(double v) {
     char buf[48];
     std::snprintf(buf, sizeof buf, "%.9g", v);
     return buf;
@@ -164,7 +164,7 @@ void writeCsv(const std::string& path, const Table& t, const std::vector<std::st
     for (size_t r = 0; r < t.rows.size(); ++r) {
         std::vector<std::string> row = t.rows[r];
         if (r < values.size())
-            for (double v : values[r]) row.push_back(num(v));
+            for (double v : values[r]) row.push_back(csvNumber(v));
         line(row);
     }
 }
@@ -210,27 +210,27 @@ Table generate(const std::string& function, const std::string& name, int mapSize
         t.header = {"case", "m1", "m2", "m3", "m4", "zf", "expected"};
         for (const auto& c : msmHardCaseCatalogue(alpha))
             for (float z : msmMonotoneLadder(c))
-                t.rows.push_back({c.name, num(c.b.x), num(c.b.y), num(c.b.z), num(c.b.w), num(z),
-                                  num(exactMomentShadowIntensity(glm::dvec4(c.b), z, alpha))});
+                t.rows.push_back({c.name, csvNumber(c.b.x), csvNumber(c.b.y), csvNumber(c.b.z), csvNumber(c.b.w), csvNumber(z),
+                                  csvNumber(exactMomentShadowIntensity(glm::dvec4(c.b), z, alpha))});
     } else if (function == "msm") {
         t.header = {"case", "m1", "m2", "m3", "m4", "zf", "expected", "bound", "note"};
         const auto cases = name == "catalogue" ? msmHardCaseCatalogue(alpha) : msmCaseSet(name, alpha);
         for (const auto& c : cases)
-            t.rows.push_back({c.name, num(c.b.x), num(c.b.y), num(c.b.z), num(c.b.w), num(c.zf),
-                              num(c.expected), num(c.bound), c.note});
+            t.rows.push_back({c.name, csvNumber(c.b.x), csvNumber(c.b.y), csvNumber(c.b.z), csvNumber(c.b.w), csvNumber(c.zf),
+                              csvNumber(c.expected), csvNumber(c.bound), c.note});
     } else if (function == "moments" && name == "depth-ladder") {
         // The grader's relativeDepth ladder (depth_ladder.h), with the exact moments.
         t.header = {"lightDepth", "near", "far", "expected_b1", "expected_b2", "expected_b3", "expected_b4"};
         for (const glm::vec3& r : relativeDepthLadder()) {
             const glm::dvec4 m = exactLadderMoments(r);
-            t.rows.push_back({num(r.x), num(r.y), num(r.z), num(m.x), num(m.y), num(m.z), num(m.w)});
+            t.rows.push_back({csvNumber(r.x), csvNumber(r.y), csvNumber(r.z), csvNumber(m.x), csvNumber(m.y), csvNumber(m.z), csvNumber(m.w)});
         }
     } else if (function == "sat-lookup" && name == "boxes") {
         // Sizes 1 .. N at texel centres at the origin, the centre and the far corner; boxes
         // that cross the map's border; fractional sizes at fractional centres. Fits any N.
         t.header = {"cx", "cy", "w", "h", "texel_centres"};
         auto add = [&](double cx, double cy, double w, double h) {
-            t.rows.push_back({num(cx), num(cy), num(w), num(h), texelCentres(cx, cy)});
+            t.rows.push_back({csvNumber(cx), csvNumber(cy), csvNumber(w), csvNumber(h), texelCentres(cx, cy)});
         };
         const double n = mapSize;
         for (int s = 1; s <= mapSize; s *= 2)
@@ -312,7 +312,7 @@ int runProbe(const ProbeArgs& a, const std::string& backend) {
             shown.header.push_back(h);
         if (!haveCentres) shown.header.push_back("texel_centres");
         for (size_t i = 0; i < shown.rows.size(); ++i) {
-            for (double v : results[i]) shown.rows[i].push_back(num(v));
+            for (double v : results[i]) shown.rows[i].push_back(csvNumber(v));
             if (!haveCentres) shown.rows[i].push_back(texelCentres(boxes[i].x, boxes[i].y));
         }
         writeCsv(a.out, shown, {}, {});

@@ -8,6 +8,7 @@
 // images show the stub value in magenta and the page names the stages still to implement.
 #include "cli_commands.h"
 #include "gl_context.h"
+#include "html_escape.h"
 #include "image_io.h"
 #include "pass_plan.h"
 #include "paths.h"
@@ -28,12 +29,6 @@ struct LadderStep {
     Scene scene;
     std::string phrase;  // "just anti-aliased" ... from the scene's description
 };
-
-std::string htmlEscape(const std::string& s) {
-    std::string out;
-    for (char c : s) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-    return out;
-}
 
 // scenes/ladder/softness_<i>.json in the order of i (softness_10 after softness_9).
 std::vector<fs::path> ladderScenes(const fs::path& root) {

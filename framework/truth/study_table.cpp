@@ -21,7 +21,7 @@ const std::vector<std::string>& columns() {
     return c;
 }
 
-std::string num(double v) {
+std::string csvNumber(double v) {
     char b[40];
     std::snprintf(b, sizeof b, "%.6g", v);
     return b;
@@ -58,7 +58,7 @@ std::vector<std::string> splitCsv(const std::string& line) {
 }
 
 void errorFields(std::vector<std::string>& f, const ShadowError& e) {
-    for (double v : {e.rmse, e.max, e.p99, e.over005, e.leakArea, e.darkArea}) f.push_back(num(v));
+    for (double v : {e.rmse, e.max, e.p99, e.over005, e.leakArea, e.darkArea}) f.push_back(csvNumber(v));
 }
 
 }  // namespace
@@ -79,12 +79,12 @@ const std::string& studyCsvHeader() {
 
 std::string toCsvLine(const StudyRow& r) {
     std::vector<std::string> f = {r.scene, r.solution, r.technique, quoted(r.spec), r.filter,
-                                  std::to_string(r.radius), num(r.kernelTexels),
+                                  std::to_string(r.radius), csvNumber(r.kernelTexels),
                                   std::to_string(r.mapSize), std::to_string(r.bits),
                                   quoted(r.parameters), std::to_string(r.mapBytes),
                                   std::to_string(r.planBytes), std::to_string(r.repeats),
-                                  num(r.frameMedian), num(r.frameMin), num(r.frameMax),
-                                  quoted(r.passTimes), num(r.copyMillis), num(r.frameRatio)};
+                                  csvNumber(r.frameMedian), csvNumber(r.frameMin), csvNumber(r.frameMax),
+                                  quoted(r.passTimes), csvNumber(r.copyMillis), csvNumber(r.frameRatio)};
     errorFields(f, r.truth);
     errorFields(f, r.filtered);
     f.push_back(std::to_string(r.truth.pixels));

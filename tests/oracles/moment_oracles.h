@@ -18,6 +18,9 @@
 
 namespace sl::oracle {
 
+// float32's unit roundoff, 2^-24: the tests' tolerances are multiples of it.
+inline constexpr double u = 1.0 / (1 << 24);
+
 // ---------------------------------------------------------------- moments.glsl
 
 // (lightDepth - near) / (far - near), clamped to [0, 1]. Precondition: far > near.
