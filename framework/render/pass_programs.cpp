@@ -1,4 +1,5 @@
-// Renderer's programs: which files and permutation each pass kind compiles, built on first use.
+// Renderer's programs: which files and permutation each pass kind compiles, built on first use
+// or all at once by compilePrograms, the warm-up before a render's first pass.
 #include "render_internal.h"
 #include "renderer.h"
 #include "technique.h"
