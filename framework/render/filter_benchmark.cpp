@@ -238,9 +238,10 @@ std::string formatBenchReport(const BenchReport& report) {
     char line[512];
     std::snprintf(line, sizeof line,
                   "%d² RGBA32F, %d interleaved repeats; ratio = median pass / median baseline, "
-                  "spread = min–max over repeats of pass / baseline of the same repeat; "
-                  "goal: issue 10's, on the ratio; tiled = median pass / median of as many "
-                  "passes of the %d-texel copy (the floor of moving the texels)\n\n",
+                  "spread = min–max over repeats of pass / baseline of the same repeat, "
+                  "goal: issue 10's, on the ratio;\n"
+                  "tiled = median pass / median of as many passes of the %d-texel copy "
+                  "(the floor of moving the texels)\n\n",
                   report.size, report.repeats, report.tileCopyTexels);
     out += line;
     out += "| pass | median ms | baseline | ratio | spread | goal | tiled |\n"
