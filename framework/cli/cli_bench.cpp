@@ -7,6 +7,7 @@
 #include "cli_commands.h"
 #include "filter_benchmark.h"
 #include "gl_context.h"
+#include "huge_pages.h"
 #include "paths.h"
 #include "renderer.h"
 
@@ -37,7 +38,7 @@ int runBench(const BenchArgs& a, const std::string& backend) {
         return Ok;
     }
     std::cout << "filter benchmark: " << a.solution << " on " << context->info().renderer << ", "
-              << context->info().version << "\n"
+              << context->info().version << "\nhuge pages: " << hugePagesState() << "\n"
               << formatBenchReport(report);
     if (!a.json.empty()) std::ofstream(a.json) << benchReportJson(report) << "\n";
     return Ok;

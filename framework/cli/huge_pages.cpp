@@ -23,6 +23,25 @@ bool turnedOff() {
     return off && std::string(off) == "0";
 }
 
+// The subcommands that gain: many renders in one process, or forked workers.
+const char* const kUsers[] = {"grade", "golden", "study", "truth", "compare", "report", "bench"};
+
+// The subcommand: the first argument that is not an option (nor --backend's value).
+std::string subcommand(int argc, char** argv) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--backend") ++i;
+        else if (!a.starts_with("-")) return a;
+    }
+    return "";
+}
+
+bool gains(const std::string& command) {
+    for (const char* c : kUsers)
+        if (command == c) return true;
+    return false;
+}
+
 std::string tunables() {
     const char* t = std::getenv("GLIBC_TUNABLES");
     return t ? t : "";
@@ -30,9 +49,9 @@ std::string tunables() {
 
 }  // namespace
 
-void useHugePages(char** argv) {
+void useHugePages(int argc, char** argv) {
     const std::string before = tunables();
-    if (turnedOff() || before.find("glibc.malloc.hugetlb") != std::string::npos) return;
+    if (!gains(subcommand(argc, argv)) || turnedOff() || before.find("glibc.malloc.hugetlb") != std::string::npos) return;
     if (transparentHugePageMode() != "madvise") return;
     const std::string value = before + (before.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
     ::setenv("GLIBC_TUNABLES", value.c_str(), 1);
@@ -50,7 +69,8 @@ std::string hugePagesState() {
     if (tunables().find("glibc.malloc.hugetlb=1") != std::string::npos)
         return "on (glibc.malloc.hugetlb=1, transparent huge pages: madvise)";
     if (turnedOff()) return "off (SHADOWLAB_HUGE_PAGES=0)";
-    return "off (GLIBC_TUNABLES=" + tunables() + ")";
+    if (!tunables().empty()) return "off (GLIBC_TUNABLES=" + tunables() + ")";
+    return "off for this command (on for grade, golden, study, truth, compare, report, bench)";
 }
 
 }  // namespace sl::cli

@@ -32,7 +32,7 @@ void addBackendOption(CLI::App& app, std::string& backend) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    sl::cli::useHugePages(argv);  // may re-execute this program once (huge_pages.h)
+    sl::cli::useHugePages(argc, argv);  // may re-execute this program once (huge_pages.h)
     CLI::App app{"Shadowlab: filtered moment shadow maps on Mesa's software rasterizer"};
     app.require_subcommand(1);
     sl::cli::Context ctx;
