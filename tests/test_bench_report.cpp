@@ -163,26 +163,12 @@ TEST(FilterBenchmark, TableAndJsonCarryTheTiledRatioColumn) {
     report.copyMedianMs = 2.0;
     report.tileCopyMedianMs = 1.0;
     report.tileCopyTexels = 4;
-    BenchRow gaussian;
-    gaussian.name = "gaussian r=8, x";
-    gaussian.medianMs = 1.5;
-    gaussian.baselineMs = 2.0;
-    gaussian.ratio = 0.75;
-    gaussian.ratioMin = 0.7;
-    gaussian.ratioMax = 0.8;
-    gaussian.goal = 1.3;
-    gaussian.baseline = "copy";
-    gaussian.tileBaselineMs = 1.0;
-    gaussian.tileRatio = 1.5;
-    BenchRow lighting;
-    lighting.name = "sat lookup, lighting pass (x)";
-    lighting.medianMs = 3.0;
-    lighting.baselineMs = 3.0;
-    lighting.ratio = 1.0;
-    lighting.ratioMin = 1.0;
-    lighting.ratioMax = 1.0;
-    lighting.goal = 1.2;
-    lighting.baseline = "bilinear fetch";
+    const BenchRow gaussian{.name = "gaussian r=8, x", .medianMs = 1.5, .baselineMs = 2.0,
+                            .ratio = 0.75, .ratioMin = 0.7, .ratioMax = 0.8, .goal = 1.3,
+                            .baseline = "copy", .tileBaselineMs = 1.0, .tileRatio = 1.5};
+    const BenchRow lighting{.name = "sat lookup, lighting pass (x)", .medianMs = 3.0,
+                            .baselineMs = 3.0, .ratio = 1.0, .ratioMin = 1.0, .ratioMax = 1.0,
+                            .goal = 1.2, .baseline = "bilinear fetch"};
     report.rows = {gaussian, lighting};
 
     const std::string table = formatBenchReport(report);
