@@ -4,6 +4,7 @@
 
 #include "gl_program.h"
 #include "pass_plan.h"
+#include "render_internal.h"
 #include "scene.h"
 
 #include <nlohmann/json.hpp>
@@ -84,11 +85,7 @@ public:
         program_.set("uImageSize", glm::ivec2(src.width, src.height));
         gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
         gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-        const glm::ivec3 local = program_.workGroupSize();
-        const int coverX = local.x * texels_;
-        gl::DispatchCompute(GLuint((src.width + coverX - 1) / coverX),
-                            GLuint((src.height + local.y - 1) / local.y), 1);
-        gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+        render_detail::dispatchTexelRuns(program_, {src.width, src.height}, {1, 0});
     }
 
 private:

@@ -11,13 +11,13 @@
 
 namespace sl {
 
-namespace {
+using render_detail::dispatchTexelRuns;
 
-// A Gaussian pass's dispatch (docs/stage_contract.md, "Invocation mapping"): each invocation
-// writes T = uTexelsPerInvocation consecutive texels along the blur direction (1 unless the
-// shader declares it), so the groups cover local size × T texels along that direction.
+
+namespace render_detail {
+
 void dispatchTexelRuns(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction) {
-    const int texels = std::max(1, p.getInt("uTexelsPerInvocation", 1));
+    const int texels = std::max(1, p.getInt("uTexelsPerInvocation", 1));  // 1 unless declared
     const glm::ivec3 local = p.workGroupSize();
     const glm::ivec2 cover(local.x * (direction.x == 1 ? texels : 1),
                            local.y * (direction.y == 1 ? texels : 1));
@@ -26,8 +26,7 @@ void dispatchTexelRuns(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction
     gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-
-}  // namespace
+}  // namespace render_detail
 
 std::vector<float> Renderer::gaussianWeights(int radius, float sigma) {
     if (radius <= 0) return {1.0f};

@@ -64,4 +64,9 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
 // GLSL image format qualifier of a map format ("r32f", "rgba16", ...); pass_programs.cpp.
 std::string imageFormat(GLenum format);
 
+// Dispatches `p` over a `size` image whose invocations each write uTexelsPerInvocation
+// consecutive texels along `direction` (docs/stage_contract.md, "Invocation mapping"), then a
+// barrier; filter_passes.cpp. The Gaussians and the bench's tiled copy.
+void dispatchTexelRuns(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction);
+
 }  // namespace sl::render_detail
