@@ -83,13 +83,8 @@ void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
     writeWith(path, spec, bytes.data(), OIIO::TypeDesc::UINT8);
 }
 
-std::string sha256File(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error(path.string() + ": cannot be read");
-    EVP_MD_CTX* ctx = EVP_MD_CTX_new();
-    EVP_DigestInit_ex(ctx, EVP_sha256(), nullptr);
-    char buf[1 << 16];
-    while (in.read(buf, sizeof buf) || in.gcount() > 0) EVP_DigestUpdate(ctx, buf, in.gcount());
+namespace {
+std::string hexDigest(EVP_MD_CTX* ctx) {
     unsigned char digest[EVP_MAX_MD_SIZE];
     unsigned int len = 0;
     EVP_DigestFinal_ex(ctx, digest, &len);
@@ -98,6 +93,24 @@ std::string sha256File(const fs::path& path) {
     std::string s;
     for (unsigned i = 0; i < len; ++i) s += {hex[digest[i] >> 4], hex[digest[i] & 15]};
     return s;
+}
+}  // namespace
+
+std::string sha256File(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(path.string() + ": cannot be read");
+    EVP_MD_CTX* ctx = EVP_MD_CTX_new();
+    EVP_DigestInit_ex(ctx, EVP_sha256(), nullptr);
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) EVP_DigestUpdate(ctx, buf, in.gcount());
+    return hexDigest(ctx);
+}
+
+std::string sha256Hex(const std::string& data) {
+    EVP_MD_CTX* ctx = EVP_MD_CTX_new();
+    EVP_DigestInit_ex(ctx, EVP_sha256(), nullptr);
+    EVP_DigestUpdate(ctx, data.data(), data.size());
+    return hexDigest(ctx);
 }
 
 }  // namespace sl

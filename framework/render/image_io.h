@@ -20,6 +20,8 @@ Image readImage(const fs::path& path);  // any format OIIO reads, converted to f
 // unimplemented or broken stage is visible at a glance.
 void writePngPreview(const Image& image, const fs::path& path, bool srgb);
 
-std::string sha256File(const fs::path& path);  // lowercase hex
+// SHA-256 in lowercase hex: of a file's bytes, and of a string (cache keys, scene digests).
+std::string sha256File(const fs::path& path);
+std::string sha256Hex(const std::string& data);
 
 }  // namespace sl

@@ -2,9 +2,9 @@
 #include "raw_map_key.h"
 
 #include "glsl_scan.h"
+#include "image_io.h"
 #include "technique.h"
 
-#include <openssl/evp.h>
 
 #include <cctype>
 #include <cstdio>
@@ -60,19 +60,6 @@ std::string uniformName(const std::string& parameter) {
 }
 
 }  // namespace
-
-std::string sha256Hex(const std::string& data) {
-    unsigned char digest[EVP_MAX_MD_SIZE];
-    unsigned int len = 0;
-    EVP_Digest(data.data(), data.size(), digest, &len, EVP_sha256(), nullptr);
-    std::string hex;
-    char buf[3];
-    for (unsigned i = 0; i < len; ++i) {
-        std::snprintf(buf, sizeof buf, "%02x", digest[i]);
-        hex += buf;
-    }
-    return hex;
-}
 
 RawMapKey rawMapKey(const Scene& scene, const PassPlan& plan, int light,
                     const ShaderLibrary& library, const std::string& sceneDigest) {

@@ -34,7 +34,4 @@ struct RawMapKey {
 RawMapKey rawMapKey(const Scene& scene, const PassPlan& plan, int light,
                     const ShaderLibrary& library, const std::string& sceneDigest);
 
-// Hex SHA-256 of a string.
-std::string sha256Hex(const std::string& data);
-
 }  // namespace sl

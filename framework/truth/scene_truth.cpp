@@ -5,7 +5,6 @@
 #include "light_reach.h"
 #include "ray_scene.h"
 
-#include <openssl/evp.h>
 
 #include <chrono>
 #include <cstdio>
@@ -27,19 +26,6 @@ std::string fileBytes(const fs::path& p) {
     return s.str();
 }
 
-std::string sha256(const std::string& data) {
-    unsigned char digest[EVP_MAX_MD_SIZE];
-    unsigned int len = 0;
-    EVP_Digest(data.data(), data.size(), digest, &len, EVP_sha256(), nullptr);
-    std::string hex;
-    char buf[3];
-    for (unsigned i = 0; i < len; ++i) {
-        std::snprintf(buf, sizeof buf, "%02x", digest[i]);
-        hex += buf;
-    }
-    return hex;
-}
-
 }  // namespace
 
 std::string sceneTruthHash(const Scene& scene, const SceneTruthOptions& options) {
@@ -50,7 +36,7 @@ std::string sceneTruthHash(const Scene& scene, const SceneTruthOptions& options)
     const Camera& cam = scene.cameras.at(size_t(options.camera));
     key += "\ncamera=" + std::to_string(options.camera) + ":" + std::to_string(cam.width) + "x" +
            std::to_string(cam.height);  // a study may render the scene smaller than its file
-    return sha256(key);
+    return sha256Hex(key);
 }
 
 fs::path defaultTruthCache() {
