@@ -19,8 +19,6 @@
 #include "scene_list.h"
 #include "probe_check.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <unistd.h>
 
 #include <cstdlib>
@@ -50,22 +48,7 @@ void writeEncoded(const Image& image, const fs::path& path, bool moments) {
     Image img = image;
     if (moments)
         for (float& v : img.pixels) v = roundMantissa(v, kMomentMantissaBits);
-    // Files are top row first.
-    std::vector<float> flipped(img.pixels.size());
-    const size_t row = size_t(img.width) * img.channels;
-    for (int y = 0; y < img.height; ++y)
-        std::copy_n(img.pixels.begin() + size_t(y) * row, row,
-                    flipped.begin() + size_t(img.height - 1 - y) * row);
-    OIIO::ImageSpec spec(img.width, img.height, img.channels,
-                         moments ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF);
-    spec.attribute("compression", "zip");
-    spec.attribute("DateTime", "");
-    if (img.channels == 1) spec.channelnames = {"Y"};
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out || !out->open(path.string(), spec) ||
-        !out->write_image(OIIO::TypeDesc::FLOAT, flipped.data()))
-        throw std::runtime_error(path.string() + ": cannot write golden image");
-    out->close();
+    writeExr(img, path, moments ? SampleType::Float : SampleType::Half);
 }
 
 std::string envOr(const char* name, const char* fallback) {

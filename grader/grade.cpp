@@ -4,6 +4,7 @@
 #include "gl_context.h"
 #include "golden.h"
 #include "grader.h"
+#include "image_codec.h"
 #include "intake.h"
 #include "isolation.h"
 #include "jobs.h"
@@ -482,7 +483,9 @@ GradeSummary gradeSubmission(const GradeOptions& o) {
         std::error_code ec;
         fs::create_directories(o.out, ec);
         Rubric rubric = loadRubric(o.rubric.empty() ? repoRoot() / "grader" / "rubric.json" : o.rubric);
-        preloadDriver(parseBackendKind(o.backend));  // once here, not in every forked child
+        // Once here, not in every forked child (they read golden EXRs through the codec).
+        preloadDriver(parseBackendKind(o.backend));
+        imageCodec();
         s = Grading(o, rubric).run();
         s.seconds = seconds();
         writeResults(results, resultsJson(s, rubric));

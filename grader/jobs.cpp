@@ -3,6 +3,7 @@
 #include "jobs.h"
 
 #include "gl_context.h"
+#include "image_codec.h"
 #include "paths.h"
 #include "shader_source.h"
 #include "worker.h"
@@ -132,7 +133,9 @@ void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
         specs.back().group.clear();
     }
     nlohmann::json times = nlohmann::json::object();
-    preloadDriver(parseBackendKind(o.backend));  // once here, not in every forked child
+    // Once here, not in every forked child (they read golden EXRs through the codec).
+    preloadDriver(parseBackendKind(o.backend));
+    imageCodec();
     const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
     std::error_code ec;
     fs::remove_all(workDir(o), ec);  // the shader cache of these renders

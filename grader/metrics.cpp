@@ -4,8 +4,7 @@
 // region" (a bug), a per-pixel pass fraction can.
 #include "metrics.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "image_codec.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,13 +39,11 @@ void oiioFigures(const Image& s, const Image& r, Comparison& out) {
     Image a = s, b = r;
     for (auto& v : a.pixels) if (!std::isfinite(v)) v = 0.0f;
     for (auto& v : b.pixels) if (!std::isfinite(v)) v = 0.0f;
-    OIIO::ImageSpec spec(s.width, s.height, s.channels, OIIO::TypeDesc::FLOAT);
-    OIIO::ImageBuf A(spec, a.pixels.data()), B(spec, b.pixels.data());
-    auto cr = OIIO::ImageBufAlgo::compare(A, B, 1e-3f, 1e-4f);
-    out.mean = cr.meanerror;
-    out.rms = cr.rms_error;
-    out.max = cr.maxerror;
-    out.psnr = std::isfinite(cr.PSNR) ? cr.PSNR : 999.0;
+    const ImageFigures f = imageCodec().compare(a, b);
+    out.mean = f.mean;
+    out.rms = f.rms;
+    out.max = f.max;
+    out.psnr = std::isfinite(f.psnr) ? f.psnr : 999.0;
 }
 
 void countCommon(const Image& s, const Image& r, Comparison& out) {

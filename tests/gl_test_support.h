@@ -3,6 +3,7 @@
 #pragma once
 
 #include "gl_context.h"
+#include "image_io.h"
 #include "pass_plan.h"
 #include "paths.h"
 #include "renderer.h"
@@ -10,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -74,6 +77,25 @@ inline CommandResult screenshotPage(const fs::path& page, const fs::path& shot,
         "--user-data-dir=" + profile.string() + " --window-size=" + std::to_string(width) + "," +
         std::to_string(height) + " --screenshot=" + shot.string() + " file://" +
         fs::absolute(page).string());
+}
+
+// The sum over R, G, B of each channel's standard deviation: about 0 for a blank (one-colour)
+// screenshot.
+inline double colourSpread(const fs::path& png) {
+    const Image img = readImage(png);
+    double spread = 0;
+    const size_t n = size_t(img.width) * img.height;
+    for (int c = 0; c < 3 && c < img.channels; ++c) {
+        double sum = 0, sum2 = 0;
+        for (size_t i = 0; i < n; ++i) {
+            const double v = img.pixels[i * img.channels + c];
+            sum += v;
+            sum2 += v * v;
+        }
+        const double mean = sum / double(n);
+        spread += std::sqrt(std::max(0.0, sum2 / double(n) - mean * mean));
+    }
+    return spread;
 }
 
 // build/shadowlab, next to this test binary's folder (build/tests/); found at run time so that

@@ -1,7 +1,7 @@
-// Huge pages (framework/cli/huge_pages.h): the commands that render many times re-execute
-// themselves with glibc's malloc asking for transparent huge pages where the kernel offers them
-// on request (`madvise`), the switch SHADOWLAB_HUGE_PAGES=0 turns that off, a single render or
-// query does not re-execute, and the images do not change with huge pages.
+// Huge pages (framework/cli/huge_pages.h): the commands that render re-execute themselves with
+// glibc's malloc asking for transparent huge pages where the kernel offers them on request
+// (`madvise`), the switch SHADOWLAB_HUGE_PAGES=0 turns that off, a query does not re-execute,
+// and the images do not change with huge pages.
 #include "gl_test_support.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@ std::string hugePagesLine(const std::string& env, const std::string& args) {
                                    : r.output.substr(at, r.output.find('\n', at) - at);
 }
 
-TEST(HugePages, OnForTheCommandsThatRenderManyTimes) {
+TEST(HugePages, OnForTheCommandsThatRender) {
     if (kernelMode().find("[madvise]") == std::string::npos)
         GTEST_SKIP() << "transparent huge pages not in madvise mode here: " << kernelMode();
     const std::string bench = "bench --size 16 --repeats 3 --lighting-scene none";
@@ -39,10 +39,10 @@ TEST(HugePages, OnForTheCommandsThatRenderManyTimes) {
     // A user's own tunables are kept and not overridden.
     EXPECT_EQ(hugePagesLine("GLIBC_TUNABLES=glibc.malloc.hugetlb=0", bench),
               "huge pages: off (GLIBC_TUNABLES=glibc.malloc.hugetlb=0)");
-    // One render or a query does not pay for a second start.
+    // A query does not pay for a second start.
     EXPECT_EQ(hugePagesLine("env -u GLIBC_TUNABLES", "--backend auto info"),
-              "huge pages: off for this command (on for grade, golden, study, truth, compare, "
-              "report, bench)");
+              "huge pages: off for this command (on for render, view, grade, golden, study, "
+              "truth, compare, report, bench)");
 }
 
 TEST(HugePages, ImagesAreTheSameBytesWithAndWithout) {
@@ -53,8 +53,7 @@ TEST(HugePages, ImagesAreTheSameBytesWithAndWithout) {
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return nlohmann::json::parse(std::ifstream(dir / name / "render.json"))["sha256"];
     };
-    // `render` does not re-execute itself; the tunable set by hand turns huge pages on in it.
-    const auto on = render("GLIBC_TUNABLES=glibc.malloc.hugetlb=1", "on");
+    const auto on = render("env -u GLIBC_TUNABLES", "on");
     const auto off = render("env -u GLIBC_TUNABLES SHADOWLAB_HUGE_PAGES=0", "off");
     ASSERT_FALSE(on.empty());
     EXPECT_EQ(on, off);

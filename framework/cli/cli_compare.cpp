@@ -14,9 +14,6 @@
 #include "scene_size.h"
 #include "technique.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -24,43 +21,23 @@
 namespace sl::cli {
 namespace {
 
-namespace OIIO = OIIO_NAMESPACE;
-
 struct SheetEntry {
     std::string name, summary;
     double totalMs = 0.0;
     std::string passRows;  // HTML rows
 };
 
-// The contact sheet: final images in a grid of `columns`, a label band above each. Labels need
-// OIIO built with FreeType and the DejaVu font; without them the grid stays unlabelled (the
-// HTML sheet always names every image).
+// The contact sheet: final images in a grid of `columns`, each labelled with its technique and
+// total pass time (image_codec.h; the HTML sheet always names every image).
 void writeSheetPng(const fs::path& outDir, const std::vector<SheetEntry>& entries, int columns) {
-    std::vector<OIIO::ImageBuf> images;
-    int w = 0, h = 0;
+    std::vector<std::string> images, labels;
     for (const auto& e : entries) {
-        images.emplace_back((outDir / e.name / "final.png").string());
-        images.back().read(0, 0, true, OIIO::TypeDesc::UINT8);
-        w = std::max(w, images.back().spec().width);
-        h = std::max(h, images.back().spec().height);
-    }
-    const int band = 28, pad = 4;
-    const int rows = (int(entries.size()) + columns - 1) / columns;
-    OIIO::ImageSpec spec(columns * (w + pad) + pad, rows * (h + band + pad) + pad, 3,
-                         OIIO::TypeDesc::UINT8);
-    OIIO::ImageBuf sheet(spec);
-    const float bg[3] = {0.1f, 0.1f, 0.12f};
-    OIIO::ImageBufAlgo::fill(sheet, bg);
-    for (size_t i = 0; i < entries.size(); ++i) {
-        const int x = pad + int(i % columns) * (w + pad);
-        const int y = pad + int(i / columns) * (h + band + pad);
-        OIIO::ImageBufAlgo::paste(sheet, x, y + band, 0, 0, images[i]);
+        images.push_back((outDir / e.name / "final.png").string());
         char label[128];
-        std::snprintf(label, sizeof label, "%s  %.0f ms", entries[i].name.c_str(), entries[i].totalMs);
-        const float white[3] = {1, 1, 1};
-        OIIO::ImageBufAlgo::render_text(sheet, x + 4, y + band - 8, label, 18, "DejaVuSans", white);
+        std::snprintf(label, sizeof label, "%s  %.0f ms", e.name.c_str(), e.totalMs);
+        labels.push_back(label);
     }
-    sheet.write((outDir / "sheet.png").string());
+    imageCodec().contactSheet((outDir / "sheet.png").string(), images, labels, columns);
 }
 
 void writeSheetHtml(const fs::path& outDir, const Scene& scene,

@@ -1,7 +1,9 @@
 // image_io: OpenImageIO output and input, previews, hashes (see image_io.h).
 #include "image_io.h"
 
-#include <OpenImageIO/imageio.h>
+#include "image_codec.h"
+
+#include <dlfcn.h>
 #include <openssl/evp.h>
 
 #include <cmath>
@@ -21,34 +23,52 @@ std::vector<float> flipRows(const Image& img) {
     return out;
 }
 
-void writeWith(const fs::path& path, OIIO::ImageSpec spec, const void* data,
-               OIIO::TypeDesc type) {
-    // OIIO stamps the current time unless DateTime is set; empty keeps files reproducible.
-    spec.attribute("DateTime", "");
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
-    if (!out->open(path.string(), spec) || !out->write_image(type, data))
-        throw std::runtime_error(path.string() + ": " + out->geterror());
-    out->close();
+// libshadowlab_oiio.so sits beside the program (build/shadowlab) or one folder up (the test
+// binary in build/tests/).
+const ImageCodec* loadCodec() {
+    const char* name = "libshadowlab_oiio.so";
+    std::error_code ec;
+    const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+    std::string tried, why;
+    for (const fs::path& dir : {exeDir, exeDir.parent_path()}) {
+        const fs::path candidate = dir / name;
+        tried += (tried.empty() ? "" : ", ") + candidate.string();
+        if (!fs::exists(candidate)) continue;
+        // RTLD_LOCAL: OpenImageIO's libraries stay out of the program's symbol lookups.
+        void* module = dlopen(candidate.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!module) { why = dlerror(); continue; }
+        auto entry = reinterpret_cast<const ImageCodec* (*)()>(dlsym(module, "shadowlabImageCodec"));
+        if (entry) return entry();
+        why = candidate.string() + " has no shadowlabImageCodec";
+    }
+    throw std::runtime_error("cannot load the image reader/writer (" + std::string(name) +
+                             ", built with the shadowlab program): tried " + tried +
+                             (why.empty() ? "" : "; " + why) + ". Rebuild: ./kit demo");
 }
 
 }  // namespace
 
-void writeExr(const Image& image, const fs::path& path) {
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    if (image.channels == 1) spec.channelnames = {"Y"};
+const ImageCodec& imageCodec() {
+    static const ImageCodec* codec = loadCodec();
+    return *codec;
+}
+
+namespace {
+
+void writeTopFirst(const fs::path& path, const Image& image, SampleType fileType) {
     auto flipped = flipRows(image);
-    writeWith(path, spec, flipped.data(), OIIO::TypeDesc::FLOAT);
+    imageCodec().write(path.string(), image.width, image.height, image.channels, flipped.data(),
+                       SampleType::Float, fileType);
+}
+
+}  // namespace
+
+void writeExr(const Image& image, const fs::path& path, SampleType stored) {
+    writeTopFirst(path, image, stored);
 }
 
 Image readImage(const fs::path& path) {
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
-    const auto& spec = in->spec();
-    Image img(spec.width, spec.height, spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
-        throw std::runtime_error(path.string() + ": " + in->geterror());
+    Image img = imageCodec().read(path.string());
     img.pixels = flipRows(img);
     return img;
 }
@@ -79,8 +99,8 @@ void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
         for (int c = 0; c < channels; ++c)
             bytes[i * channels + c] =
                 static_cast<unsigned char>(std::lround(flipped[i * 3 + c] * 255.0f));
-    OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
-    writeWith(path, spec, bytes.data(), OIIO::TypeDesc::UINT8);
+    imageCodec().write(path.string(), image.width, image.height, channels, bytes.data(),
+                       SampleType::U8, SampleType::U8);
 }
 
 namespace {

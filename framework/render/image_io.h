@@ -2,6 +2,7 @@
 #pragma once
 
 #include "image.h"
+#include "image_codec.h"
 
 #include <filesystem>
 #include <string>
@@ -10,9 +11,10 @@ namespace sl {
 
 namespace fs = std::filesystem;
 
-// Float EXR (ZIP compression, no timestamp, so equal pixels give equal bytes). Throws
-// std::runtime_error naming the file.
-void writeExr(const Image& image, const fs::path& path);
+// EXR of float (or, for `stored` Half, half) samples: ZIP compression, no timestamp, so equal
+// pixels give equal bytes. Throws std::runtime_error naming the file. Image files go through
+// libshadowlab_oiio.so, loaded on first use (image_codec.h).
+void writeExr(const Image& image, const fs::path& path, SampleType stored = SampleType::Float);
 Image readImage(const fs::path& path);  // any format OIIO reads, converted to float
 
 // 8-bit PNG of `image`'s first three channels (one channel: grey), clamped to [0, 1] after an

@@ -1,0 +1,96 @@
+// oiio_codec: libshadowlab_oiio.so, the only code that calls OpenImageIO (image_codec.h says
+// why it is a module of its own). Rows are taken and given top first; flipping GL's bottom-first
+// rows is image_io's business.
+#include "image_codec.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+OIIO::TypeDesc typeOf(sl::SampleType t) {
+    switch (t) {
+        case sl::SampleType::U8: return OIIO::TypeDesc::UINT8;
+        case sl::SampleType::Half: return OIIO::TypeDesc::HALF;
+        case sl::SampleType::Float: break;
+    }
+    return OIIO::TypeDesc::FLOAT;
+}
+
+void write(const std::string& path, int width, int height, int channels, const void* data,
+           sl::SampleType dataType, sl::SampleType fileType) {
+    OIIO::ImageSpec spec(width, height, channels, typeOf(fileType));
+    if (fileType != sl::SampleType::U8) {  // EXR
+        spec.attribute("compression", "zip");
+        if (channels == 1) spec.channelnames = {"Y"};
+    }
+    // OIIO stamps the current time unless DateTime is set; empty keeps files reproducible.
+    spec.attribute("DateTime", "");
+    auto out = OIIO::ImageOutput::create(path);
+    if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
+    if (!out->open(path, spec) || !out->write_image(typeOf(dataType), data))
+        throw std::runtime_error(path + ": " + out->geterror());
+    out->close();
+}
+
+sl::Image read(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) throw std::runtime_error(path + ": " + OIIO::geterror());
+    const auto& spec = in->spec();
+    sl::Image img(spec.width, spec.height, spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+        throw std::runtime_error(path + ": " + in->geterror());
+    return img;
+}
+
+sl::ImageFigures compare(const sl::Image& a, const sl::Image& b) {
+    OIIO::ImageSpec spec(a.width, a.height, a.channels, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf A(spec, const_cast<float*>(a.pixels.data())),
+        B(spec, const_cast<float*>(b.pixels.data()));
+    const auto cr = OIIO::ImageBufAlgo::compare(A, B, 1e-3f, 1e-4f);
+    return {cr.meanerror, cr.rms_error, cr.maxerror, cr.PSNR};
+}
+
+// Labels need OIIO built with FreeType and the DejaVu font; without them the grid stays
+// unlabelled.
+void contactSheet(const std::string& path, const std::vector<std::string>& files,
+                  const std::vector<std::string>& labels, int columns) {
+    std::vector<OIIO::ImageBuf> images;
+    int w = 0, h = 0;
+    for (const auto& f : files) {
+        images.emplace_back(f);
+        if (!images.back().read(0, 0, true, OIIO::TypeDesc::UINT8))
+            throw std::runtime_error(f + ": " + images.back().geterror());
+        w = std::max(w, images.back().spec().width);
+        h = std::max(h, images.back().spec().height);
+    }
+    const int band = 28, pad = 4;
+    const int rows = (int(files.size()) + columns - 1) / columns;
+    OIIO::ImageSpec spec(columns * (w + pad) + pad, rows * (h + band + pad) + pad, 3,
+                         OIIO::TypeDesc::UINT8);
+    OIIO::ImageBuf sheet(spec);
+    const float bg[3] = {0.1f, 0.1f, 0.12f}, white[3] = {1, 1, 1};
+    OIIO::ImageBufAlgo::fill(sheet, bg);
+    for (size_t i = 0; i < files.size(); ++i) {
+        const int x = pad + int(i % columns) * (w + pad);
+        const int y = pad + int(i / columns) * (h + band + pad);
+        OIIO::ImageBufAlgo::paste(sheet, x, y + band, 0, 0, images[i]);
+        if (i < labels.size() && !labels[i].empty())
+            OIIO::ImageBufAlgo::render_text(sheet, x + 4, y + band - 8, labels[i], 18, "DejaVuSans", white);
+    }
+    if (!sheet.write(path)) throw std::runtime_error(path + ": " + sheet.geterror());
+}
+
+const sl::ImageCodec kCodec = {write, read, compare, contactSheet};
+
+}  // namespace
+
+extern "C" __attribute__((visibility("default"))) const sl::ImageCodec* shadowlabImageCodec() {
+    return &kCodec;
+}

@@ -1,0 +1,43 @@
+// image_codec: the part of image_io that needs OpenImageIO, behind a table of functions that a
+// loadable module fills (framework/oiio/oiio_codec.cpp, libshadowlab_oiio.so next to the
+// program). Debian's OpenImageIO pulls ~250 shared libraries (codecs, OpenCV, GDAL) whose
+// loading costs ~0.5 s of CPU at every start; loaded on first use, a command that reads or
+// writes no image file (help, info, probe, a grade's workers, most tests) never pays it.
+#pragma once
+
+#include "image.h"
+
+#include <string>
+#include <vector>
+
+namespace sl {
+
+enum class SampleType { U8, Half, Float };
+
+// OpenImageIO's comparison figures (ImageBufAlgo::compare) over every channel.
+struct ImageFigures {
+    double mean = 0, rms = 0, max = 0, psnr = 0;
+};
+
+struct ImageCodec {
+    // Writes width × height × channels samples of `dataType`, rows top first, stored as
+    // `fileType` (Half, Float: EXR with zip compression, one channel named "Y"; U8: PNG). No
+    // timestamp, so equal pixels give equal bytes. Throws std::runtime_error naming the file.
+    void (*write)(const std::string& path, int width, int height, int channels, const void* data,
+                  SampleType dataType, SampleType fileType);
+    // Any format OpenImageIO reads, as float, rows top first (Image's rows are not flipped here).
+    Image (*read)(const std::string& path);
+    ImageFigures (*compare)(const Image& a, const Image& b);
+    // A grid of `columns` PNGs (8-bit), each under a label band ("" leaves it empty), as a PNG.
+    void (*contactSheet)(const std::string& path, const std::vector<std::string>& images,
+                         const std::vector<std::string>& labels, int columns);
+};
+
+// The module's table, loaded on first call (thread-safe). Throws std::runtime_error if the
+// module is missing or does not load.
+const ImageCodec& imageCodec();
+
+}  // namespace sl
+
+// The one symbol the module exports.
+extern "C" const sl::ImageCodec* shadowlabImageCodec();

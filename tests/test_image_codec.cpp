@@ -1,0 +1,69 @@
+// The image codec module (render/image_codec.h): OpenImageIO is loaded only by what reads or
+// writes an image file, files round-trip through it, its comparison figures are the textbook
+// ones, and a program without the module says which file is missing.
+#include "gl_test_support.h"
+#include "image_codec.h"
+#include "image_io.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sl::test {
+namespace {
+
+TEST(ImageCodec, CommandsThatTouchNoImageFileDoNotLoadOpenImageIO) {
+    // LD_DEBUG=files names every shared object the dynamic loader opens.
+    const auto info = runCommand("LD_DEBUG=files " + shadowlabBinary() + " info 2>&1");
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("libc.so"), std::string::npos) << "LD_DEBUG gave no file list";
+    EXPECT_EQ(info.output.find("libOpenImageIO"), std::string::npos);
+    const fs::path out = tempDir("image_codec_render");
+    const auto render = runCommand("LD_DEBUG=files " + shadowlabBinary() + " render --scene " +
+                                   scenePath("unlit_no_shadow").string() + " --out " +
+                                   out.string() + " 2>&1");
+    EXPECT_EQ(render.exitCode, 0) << render.output.substr(render.output.size() - 2000);
+    EXPECT_NE(render.output.find("libOpenImageIO"), std::string::npos);
+}
+
+TEST(ImageCodec, FilesRoundTripUpright) {
+    const fs::path dir = tempDir("image_codec_files");
+    Image img(3, 2, 2);
+    for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = 0.125f * float(i) - 0.3f;
+    writeExr(img, dir / "f.exr");
+    const Image back = readImage(dir / "f.exr");
+    ASSERT_EQ(back.width, 3);
+    ASSERT_EQ(back.height, 2);
+    ASSERT_EQ(back.channels, 2);
+    EXPECT_EQ(back.pixels, img.pixels);  // float EXR: exact, rows flipped there and back
+    writeExr(img, dir / "h.exr", SampleType::Half);
+    const Image half = readImage(dir / "h.exr");
+    for (size_t i = 0; i < img.pixels.size(); ++i)
+        EXPECT_NEAR(half.pixels[i], img.pixels[i], 1e-3) << i;
+    // The file's first row is the image's top row (Image stores the bottom row first).
+    const Image raw = imageCodec().read((dir / "f.exr").string());
+    EXPECT_EQ(raw.at(0, 0, 0), img.at(0, 1, 0));
+}
+
+TEST(ImageCodec, ComparisonFiguresAreMeanRmsAndMaxOfTheDifference) {
+    Image a(2, 2, 1), b(2, 2, 1);
+    a.pixels = {0.0f, 0.5f, 1.0f, 0.25f};
+    b.pixels = {0.0f, 0.25f, 0.5f, 0.25f};  // differences 0, 0.25, 0.5, 0
+    const ImageFigures f = imageCodec().compare(a, b);
+    EXPECT_NEAR(f.mean, 0.1875, 1e-6);
+    EXPECT_NEAR(f.rms, std::sqrt((0.0625 + 0.25) / 4), 1e-6);
+    EXPECT_NEAR(f.max, 0.5, 1e-6);
+}
+
+TEST(ImageCodec, AProgramWithoutTheModuleNamesIt) {
+    const fs::path dir = tempDir("image_codec_missing");
+    fs::copy_file(shadowlabBinary(), dir / "shadowlab");
+    const auto r = runCommand("cd '" + root().string() + "' && '" + (dir / "shadowlab").string() +
+                              "' render --scene " + scenePath("unlit_no_shadow").string() +
+                              " --out " + (dir / "out").string() + " 2>&1");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("libshadowlab_oiio.so"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sl::test
