@@ -485,7 +485,7 @@ GradeSummary gradeSubmission(const GradeOptions& o) {
         Rubric rubric = loadRubric(o.rubric.empty() ? repoRoot() / "grader" / "rubric.json" : o.rubric);
         // Once here, not in every forked child (they read golden EXRs through the codec).
         preloadDriver(parseBackendKind(o.backend));
-        imageCodec();
+        loadBeforeForking([] { imageCodec(); });  // log4cplus starts idle threads
         s = Grading(o, rubric).run();
         s.seconds = seconds();
         writeResults(results, resultsJson(s, rubric));

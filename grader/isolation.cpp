@@ -75,9 +75,10 @@ std::set<std::string> threadIds() {
     return ec ? std::set<std::string>{} : ids;
 }
 
-// The threads running before main(): log4cplus, which the image libraries link, starts an idle
-// pool while it loads. A static of the executable, so initialised after every library's.
-const std::set<std::string> kStartupThreads = threadIds();
+// The threads running before main(), and those loadBeforeForking saw start: log4cplus, which
+// the image libraries link, starts an idle pool while it loads. A static of the executable, so
+// initialised after every library's.
+std::set<std::string> kStartupThreads = threadIds();
 
 // fork without exec is safe while no thread but the main one and those idle library threads
 // (which a worker never calls) exists: any other (a GL context's, an image library's pool)
@@ -86,6 +87,17 @@ bool forkIsSafe() {
     const auto now = threadIds();
     return !now.empty() && now == kStartupThreads;
 }
+
+}  // namespace
+
+void loadBeforeForking(const std::function<void()>& load) {
+    const auto before = threadIds();
+    load();
+    for (const auto& id : threadIds())
+        if (!before.count(id)) kStartupThreads.insert(id);
+}
+
+namespace {
 
 // In a new child, before its work: own process group, dies with the grader, limits, log.
 void setUpChild(const Limits& limits, const char* log) {

@@ -48,6 +48,11 @@ struct Limits {
 // render would write outside OUT) unless its `env` turns the cache on in a folder of its own
 // (a grade's workers share one inside OUT), and in its own process group.
 
+// Runs `load` (loading a shared library every worker needs, such as the image codec) and counts
+// the threads it leaves behind as idle library threads, like those started before main(), so
+// that workers are still forked without exec after it.
+void loadBeforeForking(const std::function<void()>& load);
+
 // The path of the running executable (/proc/self/exe): workers are this binary.
 std::string selfExecutable();
 

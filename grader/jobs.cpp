@@ -135,7 +135,7 @@ void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
     nlohmann::json times = nlohmann::json::object();
     // Once here, not in every forked child (they read golden EXRs through the codec).
     preloadDriver(parseBackendKind(o.backend));
-    imageCodec();
+    loadBeforeForking([] { imageCodec(); });  // log4cplus starts idle threads
     const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
     std::error_code ec;
     fs::remove_all(workDir(o), ec);  // the shader cache of these renders
