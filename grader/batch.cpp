@@ -1,5 +1,6 @@
-// batch: a TA's folder of submissions. Each submission is graded by a child process (this
-// binary's `grade --submission`), N at a time; each of those renders in its own child
+// batch: a TA's folder of submissions. Each submission is graded by a child process (a fork
+// of the batch grading it as `grade --submission` would, or that command exec'd), N at a
+// time; each of those renders in its own child
 // processes, one at a time when N > 1, so N workers run in all. A child that crashes or hangs
 // costs its own submission only: the batch writes a results.json saying so, and a row with the
 // reason.
@@ -61,10 +62,24 @@ ChildSpec gradeSpec(const GradeOptions& o, const fs::path& logPath) {
     ChildSpec spec;
     spec.args = a;
     spec.logPath = logPath;
+    // Forked without exec where that is safe (isolation.h): the child inherits the driver and
+    // the image codec the batch has loaded, where an exec'd grade loads both again. The same
+    // options as the command line above, which is exec'd where a fork is not safe.
+    spec.run = [o] { return gradeAndPrint(o); };
     return spec;
 }
 
 }  // namespace
+
+int gradeAndPrint(const GradeOptions& o) {
+    const GradeSummary s = gradeSubmission(o);
+    if (!s.failed) printScoreTable(std::cout, s);
+    std::cout << "results: " << (o.out / "results.json").string();
+    if (o.report && !s.failed) std::cout << ", report: " << (o.out / "report" / "index.html").string();
+    std::cout << "\n";
+    for (const auto& w : visibleSummary(s).warnings) std::cerr << "warning: " << w << "\n";
+    return s.failed ? 1 : 0;
+}
 
 GradeSummary summaryFromResults(const nlohmann::json& r) {
     GradeSummary s;

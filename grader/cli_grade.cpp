@@ -73,13 +73,7 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
         }
         o.submission = g->submission;
         o.jobs = g->jobs;
-        GradeSummary s = gradeSubmission(o);
-        if (!s.failed) printScoreTable(std::cout, s);
-        std::cout << "results: " << (o.out / "results.json").string();
-        if (o.report && !s.failed) std::cout << ", report: " << (o.out / "report" / "index.html").string();
-        std::cout << "\n";
-        for (const auto& w : visibleSummary(s).warnings) std::cerr << "warning: " << w << "\n";
-        ctx.exitCode = s.failed ? Failed : Ok;
+        ctx.exitCode = gradeAndPrint(o) == 0 ? Ok : Failed;
     });
 
     auto* golden = app.add_subcommand("golden", "make (or --check) the golden images");

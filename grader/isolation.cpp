@@ -80,12 +80,17 @@ std::set<std::string> threadIds() {
 // initialised after every library's.
 std::set<std::string> kStartupThreads = threadIds();
 
-// fork without exec is safe while no thread but the main one and those idle library threads
-// (which a worker never calls) exists: any other (a GL context's, an image library's pool)
-// could hold a lock the child needs, locked forever there.
+// fork without exec is safe while no thread but the calling one and those idle library
+// threads (which a worker never calls) exists: any other (a GL context's, an image library's
+// pool) could hold a lock the child needs, locked forever there. The calling thread is the
+// main one, or in a forked child (a batch's grade) the only one, which has a new id.
 bool forkIsSafe() {
-    const auto now = threadIds();
-    return !now.empty() && now == kStartupThreads;
+    auto now = threadIds();
+    if (now.empty()) return false;
+    now.erase(std::to_string(::gettid()));
+    for (const auto& id : now)
+        if (!kStartupThreads.count(id)) return false;
+    return true;
 }
 
 }  // namespace
