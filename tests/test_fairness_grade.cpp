@@ -105,16 +105,18 @@ TEST(FairnessGrade, StubbedRelativeDepthIsNotImplementedAndBorderBugsNameTheirTe
         "gaussian_mirror",
         {{"gaussian_blur.comp", test::readText(test::root() / "tests" / "submissions" / "mutants" /
                                                "gaussian_edge_mirror" / "gaussian_blur.comp")}});
-    auto a = test::grade("--no-report --scenes classic --submission " + stub.string(),
-                         test::tempDir("fairness_relative_depth_stub"));
+    // Both in one --batch: the reference renders once for the two.
+    auto graded = test::gradeBatch({{"relative_depth_stub", stub}, {"gaussian_mirror", mirror}},
+                                   "--no-report --scenes classic",
+                                   test::tempDir("fairness_stub_and_mirror"));
+    const test::Graded& a = graded["relative_depth_stub"];
     ASSERT_EQ(a.run.exitCode, 0) << a.run.output;
     EXPECT_EQ(a.score("classic", "moments"), 0.0);
     EXPECT_NE(a.output("classic", "moments").find("not implemented: submission/moments.glsl: relativeDepth"),
               std::string::npos) << a.output("classic", "moments");
     expectPointsAgree(a);
 
-    auto b = test::grade("--no-report --scenes classic --submission " + mirror.string(),
-                         test::tempDir("fairness_gaussian_mirror"));
+    const test::Graded& b = graded["gaussian_mirror"];
     ASSERT_EQ(b.run.exitCode, 0) << b.run.output;
     const std::string out = b.output("classic", "gaussian");
     // Fewer than 0.5 % of the texels are off, but by far more than 5x the tolerance.

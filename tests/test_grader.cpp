@@ -171,13 +171,18 @@ TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
 // The robustness stage (issue 4): the fragile variants of msm.glsl lose points there, with the
 // failing hard cases and their inputs listed; the reference scores full.
 TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
-    for (const char* variant : {"mutants/msm_no_moment_bias", "fragile/unguarded"}) {
+    const std::vector<std::string> variants = {"mutants/msm_no_moment_bias", "fragile/unguarded"};
+    std::map<std::string, fs::path> subs;  // both in one --batch: one reference render
+    for (const auto& variant : variants) {
         const fs::path dir = test::root() / "tests/submissions" / variant;
         const std::string tag = dir.filename().string();
-        fs::path sub = test::makeSubmission("fragile_" + tag,
-                                            {{"msm.glsl", test::readText(dir / "msm.glsl")}});
-        auto g = test::grade("--submission " + sub.string() + " --scenes classic --no-report",
-                             test::tempDir("grader_fragile_out_" + tag));
+        subs[tag] = test::makeSubmission("fragile_" + tag,
+                                         {{"msm.glsl", test::readText(dir / "msm.glsl")}});
+    }
+    auto graded = test::gradeBatch(subs, "--scenes classic --no-report",
+                                   test::tempDir("grader_fragile_out"));
+    for (const auto& variant : variants) {
+        const test::Graded& g = graded[fs::path(variant).filename().string()];
         ASSERT_FALSE(g.results.is_null()) << g.run.output;
         const std::string out = g.output("hard cases", "robustness");
         EXPECT_LT(g.score("hard cases", "robustness"), g.maxScore("hard cases", "robustness"))

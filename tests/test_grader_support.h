@@ -68,4 +68,28 @@ inline Graded grade(const std::string& args, const fs::path& out, const std::str
     return g;
 }
 
+// What grade() gives, for several submissions graded by one `shadowlab grade --batch` (the
+// reference renders once for all of them, two submissions at a time): per name, its
+// results.json, and as `run` its own output (OUT/<name>.log: the score table, the warnings)
+// followed by the batch's, with the exit code `grade --submission` would have given (the
+// batch's if that failed, else 1 for a results.json without tests: the grader failed).
+inline std::map<std::string, Graded> gradeBatch(const std::map<std::string, fs::path>& submissions,
+                                                const std::string& args, const fs::path& out) {
+    const fs::path batch = tempDir(out.filename().string() + "_batch");
+    for (const auto& [name, folder] : submissions) fs::copy(folder, batch / name);
+    const CommandResult run = runCommand(shadowlabBinary() + " grade --batch " + batch.string() +
+                                         " -j 2 " + args + " --out " + out.string());
+    std::map<std::string, Graded> graded;
+    for (const auto& [name, folder] : submissions) {
+        Graded& g = graded[name];
+        std::ifstream in(out / name / "results.json");
+        if (in) g.results = nlohmann::json::parse(in, nullptr, false);
+        const bool tests = g.results.is_object() && g.results.contains("tests") &&
+                           !g.results["tests"].empty();
+        g.run = {run.exitCode != 0 ? run.exitCode : tests ? 0 : 1,
+                 readText(out / (name + ".log")) + run.output};
+    }
+    return graded;
+}
+
 }  // namespace sl::test
