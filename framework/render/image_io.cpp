@@ -53,18 +53,10 @@ const ImageCodec& imageCodec() {
     return *codec;
 }
 
-namespace {
-
-void writeTopFirst(const fs::path& path, const Image& image, SampleType fileType) {
-    auto flipped = flipRows(image);
-    imageCodec().write(path.string(), image.width, image.height, image.channels, flipped.data(),
-                       SampleType::Float, fileType);
-}
-
-}  // namespace
-
 void writeExr(const Image& image, const fs::path& path, SampleType stored) {
-    writeTopFirst(path, image, stored);
+    const auto flipped = flipRows(image);
+    imageCodec().write(path.string(), image.width, image.height, image.channels, flipped.data(),
+                       SampleType::Float, stored);
 }
 
 Image readImage(const fs::path& path) {
