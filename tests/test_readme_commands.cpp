@@ -8,12 +8,18 @@ namespace {
 
 // A scratch folder that looks like the kit's root: its entries are links to the real ones,
 // build/ is this test's build folder; outputs (out/, cases.csv) land in the scratch folder.
+// Two entries are copies: `kit` (it takes its root from its own real path: a link would send
+// ./kit's outputs into the real kit's out/) and `student/` (the grader takes no submission
+// folder that is a link: `grade --submission student` would grade nothing).
 fs::path kitLookalike(const std::string& name) {
     fs::path dir = test::tempDir(name);
     for (const auto& e : fs::directory_iterator(test::root())) {
         const std::string n = e.path().filename().string();
-        if (n == "build" || n == "out" || n.rfind(".", 0) == 0) continue;
-        fs::create_symlink(e.path(), dir / n);
+        if (n == "build" || n.rfind("build-", 0) == 0 || n == "out" || n.rfind(".", 0) == 0) continue;
+        if (n == "kit" || n == "student")
+            fs::copy(e.path(), dir / n, fs::copy_options::recursive);
+        else
+            fs::create_symlink(e.path(), dir / n);
     }
     fs::create_symlink(test::buildDir(), dir / "build");
     return dir;
@@ -46,6 +52,12 @@ TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
     std::cout << "ran " << commands.size() << " documented commands\n" << skipped;
     EXPECT_TRUE(fs::exists(dir / "out/classic/final.png"));
     EXPECT_GT(fs::file_size(dir / "cases.csv"), 1000u);
+    // ./kit wrote into the scratch folder; the grades graded the stubs (the stage files taken).
+    EXPECT_TRUE(fs::exists(dir / "out/demo/student/classic/final.png"));
+    EXPECT_TRUE(fs::exists(dir / "out/report/index.html"));
+    const std::string results = test::readFile(dir / "out/grade/results.json");
+    EXPECT_NE(results.find("not implemented"), std::string::npos) << results.substr(0, 2000);
+    EXPECT_EQ(results.find("not submitted"), std::string::npos) << results.substr(0, 2000);
 }
 
 // README: `build/shadowlab render ... --backend egl` (issue 7 §1): the option after the
