@@ -6,6 +6,7 @@
 // reason.
 #include "batch.h"
 
+#include "image_codec.h"
 #include "isolation.h"
 #include "jobs.h"
 #include "results.h"
@@ -139,6 +140,8 @@ int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base) {
     progress(0, subs.size(), "");
     // A whole submission's limit: generous, only against a grader that never returns.
     const Limits limits{1800.0, 2 * base.memoryMb};
+    // Loaded once here, not in every submission's child (log4cplus starts idle threads).
+    loadBeforeForking([] { imageCodec(); });
     const auto results = runChildren(specs, limits, std::max(1, parallel),
                                      [&](size_t i, const ChildResult&) {
                                          progress(++done, subs.size(), subs[i].filename().string());
