@@ -45,9 +45,9 @@ TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
         for (const auto& c : test::documentedCommands(test::readFile(test::root() / doc)))
             if (std::find(commands.begin(), commands.end(), c) == commands.end()) commands.push_back(c);
     ASSERT_GE(commands.size(), 10u) << testing::PrintToString(commands);
-    std::string failures, skipped;
+    std::string skipped;
     const std::string env = "SHADOWLAB_BUILD='" + test::buildDir().string() + "'";
-    for (const auto& c : commands) failures += test::runDocumented(dir, c, true, env, &skipped);
+    const std::string failures = test::runDocumentedCommands(dir, commands, true, env, &skipped);
     EXPECT_EQ(failures, "");
     std::cout << "ran " << commands.size() << " documented commands\n" << skipped;
     EXPECT_TRUE(fs::exists(dir / "out/classic/final.png"));
