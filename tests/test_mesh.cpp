@@ -2,6 +2,7 @@
 // triangles wound counter-clockwise seen from outside, closed shapes are watertight and
 // enclose the right volume, and objects are placed by T * Rz * Ry * Rx * S.
 #include "mesh.h"
+#include "paths.h"
 #include "scene.h"
 
 #include <gtest/gtest.h>
@@ -19,7 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 using namespace sl;
 
-const fs::path kScenes = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes";
+// The kit's scenes/ (found at run time: no path compiled in, so ccache shares this object
+// between copies of the kit).
+fs::path meshTestScenes() { return repoRoot() / "scenes"; }
 
 // A scratch directory of this test process, for the OBJ files the tests write.
 fs::path scratchDir() {
@@ -201,7 +204,7 @@ TEST(SceneMesh, ObjNormalsFromTheFileAreKept) {
 }
 
 TEST(SceneMesh, StarObjOfThinSceneIsClosed) {
-    const Scene scene = loadScene((kScenes / "thin.json").string());
+    const Scene scene = loadScene((meshTestScenes() / "thin.json").string());
     for (const Object& o : scene.objects)
         if (o.shape == ShapeType::Mesh) {
             const Mesh m = buildMesh(o, scene);

@@ -2,6 +2,7 @@
 // carries probes, and a malformed scene fails with one line that names the file, the JSON
 // path, what was expected and what was found. The shapes themselves: test_mesh.cpp.
 #include "mesh.h"
+#include "paths.h"
 #include "scene.h"
 
 #include <gtest/gtest.h>
@@ -20,11 +21,13 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace sl;
 
-const fs::path kScenes = fs::path(SHADOWLAB_SOURCE_DIR) / "scenes";
+// The kit's scenes/ (found at run time: no path compiled in, so ccache shares this object
+// between copies of the kit).
+fs::path sceneTestScenes() { return repoRoot() / "scenes"; }
 
 std::vector<fs::path> publicScenes() {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(kScenes))
+    for (const auto& entry : fs::directory_iterator(sceneTestScenes()))
         if (entry.path().extension() == ".json") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     return files;
@@ -104,7 +107,7 @@ TEST(SceneFiles, EveryObjectTessellates) {
 }
 
 TEST(SceneFiles, EachSceneExercisesItsCase) {
-    auto load = [](const char* name) { return loadScene((kScenes / name).string()); };
+    auto load = [](const char* name) { return loadScene((sceneTestScenes() / name).string()); };
     const Scene classic = load("classic.json");
     EXPECT_EQ(classic.shadow.filter, FilterKind::Gaussian);
     EXPECT_EQ(classic.shadow.gaussianRadius, 4);
