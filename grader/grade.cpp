@@ -519,9 +519,11 @@ GradeSummary gradeSubmission(const GradeOptions& o) {
         std::error_code ec;
         fs::create_directories(o.out, ec);
         Rubric rubric = loadRubric(o.rubric.empty() ? repoRoot() / "grader" / "rubric.json" : o.rubric);
-        // Once here, not in every forked child (they read golden EXRs through the codec).
+        // Once here, not in every forked child: the driver, and the image codec that the
+        // goldens' decoders and this process's comparisons and report need (loaded through
+        // loadBeforeForking: log4cplus starts idle threads).
         preloadDriver(parseBackendKind(o.backend));
-        loadBeforeForking([] { imageCodec(); });  // log4cplus starts idle threads
+        loadBeforeForking([] { imageCodec(); });
         s = Grading(o, rubric).run();
         s.seconds = seconds();
         writeResults(results, resultsJson(s, rubric));

@@ -22,8 +22,7 @@ struct ChildSpec {
     // Extra environment (name, value), set after the shader-cache defaults below.
     std::vector<std::pair<std::string, std::string>> env;
     // The child's work in this process, returning its exit code: run after fork without exec
-    // while the grader has started no thread (exec re-links ~270 shared libraries per child, a
-    // quarter of a grade's CPU). With threads of its own (a GL context, an image library's
+    // while the grader has started no thread (an exec'd child loads the driver again). With threads of its own (a GL context, an image library's
     // pool) fork is unsafe: then `args` are exec'd as before. Empty: always exec.
     std::function<int()> run;
 };

@@ -3,7 +3,6 @@
 #include "jobs.h"
 
 #include "gl_context.h"
-#include "image_codec.h"
 #include "paths.h"
 #include "shader_source.h"
 #include "worker.h"
@@ -133,9 +132,7 @@ void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
         specs.back().group.clear();
     }
     nlohmann::json times = nlohmann::json::object();
-    // Once here, not in every forked child (they read golden EXRs through the codec).
-    preloadDriver(parseBackendKind(o.backend));
-    loadBeforeForking([] { imageCodec(); });  // log4cplus starts idle threads
+    preloadDriver(parseBackendKind(o.backend));  // once here, not in every forked child
     const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
     std::error_code ec;
     fs::remove_all(workDir(o), ec);  // the shader cache of these renders
