@@ -54,8 +54,24 @@ void writeOutput(int j, ivec2 first, ivec2 last) {
     if (all(lessThanEqual(p, last))) imageStore(uDestination, p, sum);
 }
 
+// The y pass walks the groups in bands of 4 (256 texels wide), as the reference does
+// (reference/gaussian_blur.comp, bandedGroup): the group below, which reads the same rows
+// again, runs while they are still in L2, whatever the image width. Float division: llvmpipe
+// divides vector integers lane by lane.
+ivec2 bandedGroup() {
+    ivec2 groups = ivec2(gl_NumWorkGroups.xy);
+    int band = uDirection.y == 1 ? 4 : groups.x;  // x pass: one band, the identity
+    int linear = int(gl_WorkGroupID.x) + int(gl_WorkGroupID.y) * groups.x;
+    int perBand = min(band, groups.x) * groups.y;
+    int b = int((float(linear) + 0.5) / float(perBand));
+    int inBand = linear - b * perBand;
+    int width = min(band, groups.x - b * band);  // the last band may be narrower
+    int row = int((float(inBand) + 0.5) / float(width));
+    return ivec2(b * band + inBand - row * width, row);
+}
+
 void main() {
-    ivec2 g = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 g = bandedGroup() * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
     ivec2 first = g + g * uDirection * (T - 1);  // stretched by T along the blur direction
     ivec2 last = uImageSize - 1;
 
