@@ -11,9 +11,13 @@
 // and each line is shared by SAT_CHUNKS invocations that split it into contiguous chunks.
 // Chunks are whole tiles (below), so each invocation scans its chunk alone: no shared memory,
 // no barrier. Work per line: n image loads and n stores, i.e. O(n). Any length n >= 1 works
-// (trailing chunks of a short line are empty). Consecutive invocations go to consecutive
-// *lines*: llvmpipe runs consecutive invocations as the lanes of one SIMD batch, so in the
-// column pass the lanes then read neighbouring texels of a row (about 1.4× faster there).
+// (trailing chunks of a short line are empty). llvmpipe runs 8 consecutive invocations as the
+// lanes of one SIMD batch, so the mapping differs per pass. Columns: consecutive invocations
+// take consecutive *lines*, and the lanes read neighbouring texels of a row (about 1.4× faster
+// there). Rows: consecutive invocations take consecutive *chunks* of one line; 8 lines at once
+// would be 8 rows 16 KiB apart at 1024², all in the same L1 set (set index = address mod
+// 4 KiB) with the 8 rows they write, more lines than its 8 ways: row pass 1.6 -> 1.2 copies on a
+// Zen 3 EPYC (at 1000², where rows do not alias, both mappings cost 1.05-1.2).
 //
 // Precision (docs/numerics.md): a plain float32 table grows to ~(width · height) · moment,
 // and its rounding error (~6e-8 relative) swamps a small box's sum once sat_lookup.glsl
@@ -57,10 +61,10 @@ void main()
     int  lineLength = alongRows ? uImageSize.x : uImageSize.y;
     int  lineCount  = alongRows ? uImageSize.y : uImageSize.x;
 
-    // Consecutive invocations -> consecutive lines (see above).
+    // Consecutive invocations -> consecutive chunks of a row, or consecutive columns (above).
     int local = int(gl_LocalInvocationIndex);
-    int l     = local % SAT_LINES;  // line within the work group
-    int chunk = local / SAT_LINES;  // chunk within the line
+    int l     = alongRows ? local / SAT_CHUNKS : local % SAT_LINES;  // line within the work group
+    int chunk = alongRows ? local % SAT_CHUNKS : local / SAT_LINES;  // chunk within the line
     int line  = int(gl_WorkGroupID.y) * SAT_LINES + l;
     if (line >= lineCount)
         return;

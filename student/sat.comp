@@ -27,7 +27,8 @@
 // reports as "not implemented yet" and previews in magenta. Only a texel of exactly
 // (-1, -1, -1, -1) reads as the stub: a table stored with an offset may hold negative values.
 
-// 16 x 16 (measured best): give 8 consecutive invocations 8 lines, not 8 chunks of one (performance.md)
+// 16 x 16 (measured best). Columns: give 8 consecutive invocations 8 lines (neighbouring texels
+// of a row); rows: 8 chunks of one line (8 rows at once share an L1 set at 1024²; performance.md)
 layout(local_size_x = 16, local_size_y = 16, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
