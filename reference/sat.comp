@@ -34,13 +34,20 @@
 // sat_lookup.glsl rebuilds the box sum from them, tile by tile.
 // Measured on Mesa 22.3 llvmpipe, 1024² RGBA32F: docs/numerics.md, "Speed".
 
-// Measured (docs/performance.md): 16 chunks per line (short scans: 2 tiles each on 1024²) and
-// 16 lines per group, at least one SIMD vector of lines (8 lanes at 256 bits; 4 lines cost
-// 2.1 copies, lanes then straddle two chunks). 4 chunks cost 1.6-2.0 copies, 16 chunks 1.2-1.5.
-// The table does not depend on them: the sums restart at every tile.
-#define SAT_CHUNKS 16  // invocations (chunks) per line = local_size_x
-#define SAT_LINES  16  // lines per work group        = local_size_y
+// Work-group shape, measured on llvmpipe (docs/performance.md, SAT): llvmpipe runs 8
+// consecutive invocations as the lanes of one SIMD vector, so invocation i takes the role
+// i % 8 among 8 and its chunk from i / 8 in both passes:
+//   rows:    the 8 lanes are 8 chunks of one row (8 rows at once would be 16 KiB apart at
+//            1024², all in one L1 set with the rows they write: 1.6 copies instead of 1.0);
+//   columns: the 8 lanes are 8 quads of neighbouring columns, 4 columns per invocation, so
+//            each step down reads a 512-byte run of a row (one cache line per lane) and has
+//            8 independent lines in flight: 2.8 copies with one column per invocation, 1.4
+//            with four, at 1024² on a Zen 3 EPYC, where a walk down columns waits on memory.
+// The table does not depend on the shape: the sums restart at every tile.
+#define SAT_CHUNKS 8   // local_size_x: chunks per row (row pass), column quads (column pass)
+#define SAT_LINES  32  // local_size_y: lines per work group (the framework's dispatch unit)
 #define SAT_TILE   32  // tile size; must equal SAT_TILE in sat_lookup.glsl
+#define SAT_QUAD   4   // columns per invocation in the column pass
 
 layout(local_size_x = SAT_CHUNKS, local_size_y = SAT_LINES, local_size_z = 1) in;
 
@@ -49,43 +56,70 @@ layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
 uniform ivec2 uDirection;  // (1, 0): prefix sums along rows; (0, 1): along columns
 uniform ivec2 uImageSize;
 
-// Image coordinates of position `pos` on line `line`.
-ivec2 satTexel(int pos, int line, bool alongRows)
+// Chunk `chunk` of `chunks` along a line of length n: [begin, end), a whole number of tiles
+// (the last may be short, trailing ones empty).
+ivec2 chunkRange(int chunk, int chunks, int n)
 {
-    return alongRows ? ivec2(pos, line) : ivec2(line, pos);
+    int tilesPerChunk = ((n + SAT_TILE - 1) / SAT_TILE + chunks - 1) / chunks;
+    int begin = min(chunk * tilesPerChunk * SAT_TILE, n);
+    return ivec2(begin, min(begin + tilesPerChunk * SAT_TILE, n));
+}
+
+// One step of a tile segment's scan at position i of the line: at a tile's first texel
+// first = v and dst = v; after it running += v - first and dst = running. Selects, not an
+// if/else: llvmpipe runs both sides of a branch, and each side held a store.
+vec4 scanStep(int i, vec4 v, inout vec4 first, inout vec4 running)
+{
+    bool start = i % SAT_TILE == 0;
+    first = start ? v : first;
+    running = start ? vec4(0.0) : running + (v - first);
+    return start ? first : running;
+}
+
+// Row pass: texels [begin, end) of row `row`.
+void scanRow(int row, ivec2 range)
+{
+    vec4 first = vec4(0.0), running = vec4(0.0);
+    for (int i = range.x; i < range.y; ++i) {
+        ivec2 texel = ivec2(i, row);
+        imageStore(uDestination, texel, scanStep(i, imageLoad(uSource, texel), first, running));
+    }
+}
+
+// Column pass: texels [begin, end) of the SAT_QUAD columns from `column` on (those left of
+// `columns`), walked down together.
+void scanColumns(int column, int columns, ivec2 range)
+{
+    vec4 first[SAT_QUAD], running[SAT_QUAD];
+    for (int c = 0; c < SAT_QUAD; ++c)
+        first[c] = running[c] = vec4(0.0);
+    for (int i = range.x; i < range.y; ++i) {
+        vec4 v[SAT_QUAD];
+        for (int c = 0; c < SAT_QUAD; ++c)  // all loads first: they are independent
+            v[c] = imageLoad(uSource, ivec2(column + c, i));
+        for (int c = 0; c < SAT_QUAD; ++c) {
+            vec4 sum = scanStep(i, v[c], first[c], running[c]);
+            if (column + c < columns)
+                imageStore(uDestination, ivec2(column + c, i), sum);
+        }
+    }
 }
 
 void main()
 {
-    bool alongRows  = uDirection.x != 0;
-    int  lineLength = alongRows ? uImageSize.x : uImageSize.y;
-    int  lineCount  = alongRows ? uImageSize.y : uImageSize.x;
-
-    // Consecutive invocations -> consecutive chunks of a row, or consecutive columns (above).
     int local = int(gl_LocalInvocationIndex);
-    int l     = alongRows ? local / SAT_CHUNKS : local % SAT_LINES;  // line within the work group
-    int chunk = alongRows ? local % SAT_CHUNKS : local / SAT_LINES;  // chunk within the line
-    int line  = int(gl_WorkGroupID.y) * SAT_LINES + l;
-    if (line >= lineCount)
-        return;
-
-    // This invocation's chunk [begin, end): a whole number of tiles (the last may be short).
-    int tilesPerChunk = ((lineLength + SAT_TILE - 1) / SAT_TILE + SAT_CHUNKS - 1) / SAT_CHUNKS;
-    int begin = min(chunk * tilesPerChunk * SAT_TILE, lineLength);
-    int end   = min(begin + tilesPerChunk * SAT_TILE, lineLength);
-
-    vec4 first = vec4(0.0);    // src at the start of the current tile segment
-    vec4 running = vec4(0.0);  // Σ (src(k) - first) over the segment so far
-    for (int i = begin; i < end; ++i) {
-        ivec2 texel = satTexel(i, line, alongRows);
-        vec4 v = imageLoad(uSource, texel);
-        if (i % SAT_TILE == 0) {
-            first = v;
-            running = vec4(0.0);
-            imageStore(uDestination, texel, first);
-        } else {
-            running += v - first;
-            imageStore(uDestination, texel, running);
-        }
+    int lane = local % SAT_CHUNKS, slot = local / SAT_CHUNKS;
+    int firstLine = int(gl_WorkGroupID.y) * SAT_LINES;
+    if (uDirection.x != 0) {
+        // Row firstLine + slot, chunk `lane` of SAT_CHUNKS.
+        int row = firstLine + slot;
+        if (row < uImageSize.y)
+            scanRow(row, chunkRange(lane, SAT_CHUNKS, uImageSize.x));
+    } else {
+        // Columns firstLine + SAT_QUAD·lane ..., chunk `slot` of SAT_LINES (the group's
+        // SAT_LINES columns are SAT_CHUNKS quads).
+        int column = firstLine + SAT_QUAD * lane;
+        if (column < uImageSize.x)
+            scanColumns(column, uImageSize.x, chunkRange(slot, SAT_LINES, uImageSize.y));
     }
 }

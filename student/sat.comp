@@ -27,9 +27,11 @@
 // reports as "not implemented yet" and previews in magenta. Only a texel of exactly
 // (-1, -1, -1, -1) reads as the stub: a table stored with an offset may hold negative values.
 
-// 16 x 16 (measured best). Columns: give 8 consecutive invocations 8 lines (neighbouring texels
-// of a row); rows: 8 chunks of one line (8 rows at once share an L1 set at 1024²; performance.md)
-layout(local_size_x = 16, local_size_y = 16, local_size_z = 1) in;
+// 8 x 32, the reference's shape: llvmpipe runs 8 consecutive invocations as one SIMD vector.
+// Rows: let those 8 be 8 chunks of one row (8 rows at once share an L1 set at 1024²). Columns:
+// let them be 8 neighbouring columns, so each step down reads a run of one row; walking 4
+// columns per invocation halves the column pass again (docs/performance.md, SAT).
+layout(local_size_x = 8, local_size_y = 32, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;

@@ -128,6 +128,30 @@ TEST(ReferenceVsOracle, SummedAreaTableOnTheContactScenesMoments) {
         ASSERT_NEAR(sat[i], want[i], growth * want[i] + 1e-6) << i;
 }
 
+// Odd sizes against the double-precision table: partial tiles, a last group with fewer
+// columns than a work group (and than one quad of 4: reference/sat.comp walks 4 columns per
+// invocation), rows not a multiple of the group's 32 lines, and lines of length 1.
+TEST(ReferenceVsOracle, SatOnOddSizes) {
+    test::sharedContext();
+    Renderer renderer(test::library("reference"));
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> d(0.0f, 1.0f);
+    for (auto [w, h] : {std::pair{130, 67}, {67, 130}, {1, 45}, {45, 1}, {33, 33}, {290, 3}}) {
+        Image src(w, h, 4);
+        for (auto& v : src.pixels) v = d(rng);
+        Texture a = Texture::create(w, h, GL_RGBA32F), b = Texture::create(w, h, GL_RGBA32F),
+                c = Texture::create(w, h, GL_RGBA32F);
+        a.upload(src);
+        renderer.satPass(a, b, {1, 0});
+        renderer.satPass(b, c, {0, 1});
+        const auto got = oracle::plainSatFromOffsetTable(c.read().pixels, w, h);
+        const auto want = oracle::summedAreaTable(src.pixels, w, h);
+        const double growth = (w + h) * u;
+        for (size_t i = 0; i < want.size(); ++i)
+            ASSERT_NEAR(got[i], want[i], growth * want[i] + 1e-6) << w << "x" << h << " @" << i;
+    }
+}
+
 TEST(ReferenceVsOracle, SatBoxAverageOnTheGpuTable) {
     Scene scene = loadScene(test::scenePath("contact"));
     RenderResult r = test::renderScene(scene);
