@@ -45,6 +45,23 @@ TEST(ImageCodec, FilesRoundTripUpright) {
     EXPECT_EQ(raw.at(0, 0, 0), img.at(0, 1, 0));
 }
 
+// Compression::Fast (a render's outputs) trades file size for zlib time, never pixels: both
+// levels give back the exact floats, the fast file is really written at another level (its
+// bytes differ), and it is the same bytes when written again.
+TEST(ImageCodec, FastCompressionKeepsEveryFloatAndIsReproducible) {
+    const fs::path dir = tempDir("image_codec_levels");
+    Image img(256, 64, 4);
+    for (size_t i = 0; i < img.pixels.size(); ++i)  // smooth with noise: compressible, not trivially
+        img.pixels[i] = std::sin(0.01f * float(i)) + 1e-3f * float((i * 2654435761u) % 1000);
+    writeExr(img, dir / "compact.exr");
+    writeExr(img, dir / "fast.exr", SampleType::Float, Compression::Fast);
+    writeExr(img, dir / "fast2.exr", SampleType::Float, Compression::Fast);
+    EXPECT_EQ(readImage(dir / "compact.exr").pixels, img.pixels);
+    EXPECT_EQ(readImage(dir / "fast.exr").pixels, img.pixels);
+    EXPECT_NE(sha256File(dir / "fast.exr"), sha256File(dir / "compact.exr"));
+    EXPECT_EQ(sha256File(dir / "fast.exr"), sha256File(dir / "fast2.exr"));
+}
+
 TEST(ImageCodec, ComparisonFiguresAreMeanRmsAndMaxOfTheDifference) {
     Image a(2, 2, 1), b(2, 2, 1);
     a.pixels = {0.0f, 0.5f, 1.0f, 0.25f};

@@ -24,11 +24,14 @@ OIIO::TypeDesc typeOf(sl::SampleType t) {
 }
 
 void write(const std::string& path, int width, int height, int channels, const void* data,
-           sl::SampleType dataType, sl::SampleType fileType) {
+           sl::SampleType dataType, sl::SampleType fileType, sl::Compression compression) {
     OIIO::ImageSpec spec(width, height, channels, typeOf(fileType));
+    const bool fast = compression == sl::Compression::Fast;
     if (fileType != sl::SampleType::U8) {  // EXR
-        spec.attribute("compression", "zip");
+        spec.attribute("compression", fast ? "zip:1" : "zip");  // "zip:N": zlib level N
         if (channels == 1) spec.channelnames = {"Y"};
+    } else if (fast) {
+        spec.attribute("png:compressionLevel", 1);
     }
     // OIIO stamps the current time unless DateTime is set; empty keeps files reproducible.
     spec.attribute("DateTime", "");

@@ -53,10 +53,11 @@ const ImageCodec& imageCodec() {
     return *codec;
 }
 
-void writeExr(const Image& image, const fs::path& path, SampleType stored) {
+void writeExr(const Image& image, const fs::path& path, SampleType stored,
+              Compression compression) {
     const auto flipped = flipRows(image);
     imageCodec().write(path.string(), image.width, image.height, image.channels, flipped.data(),
-                       SampleType::Float, stored);
+                       SampleType::Float, stored, compression);
 }
 
 Image readImage(const fs::path& path) {
@@ -92,7 +93,7 @@ void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
             bytes[i * channels + c] =
                 static_cast<unsigned char>(std::lround(flipped[i * 3 + c] * 255.0f));
     imageCodec().write(path.string(), image.width, image.height, channels, bytes.data(),
-                       SampleType::U8, SampleType::U8);
+                       SampleType::U8, SampleType::U8, Compression::Fast);
 }
 
 namespace {

@@ -19,7 +19,7 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
         files[file] = sha256File(outDir / file);
     };
     for (const auto& [name, image] : result.images) {
-        writeExr(image, outDir / (name + ".exr"));
+        writeExr(image, outDir / (name + ".exr"), SampleType::Float, Compression::Fast);
         record(name + ".exr");
         const bool isSat = name.rfind("sat", 0) == 0;  // sums, not viewable values
         if (isSat) continue;
