@@ -62,6 +62,35 @@ TEST(ImageCodec, FastCompressionKeepsEveryFloatAndIsReproducible) {
     EXPECT_EQ(sha256File(dir / "fast.exr"), sha256File(dir / "fast2.exr"));
 }
 
+// Previews: top row first, grey stays one channel, sRGB when asked, magenta for stub (-1) and
+// non-finite texels (which turn the whole preview RGB). Expected bytes by hand:
+// 0.25 -> 64 linear; sRGB 1.055 · 0.25^(1/2.4) - 0.055 = 0.5371 -> 137.
+TEST(ImageCodec, PngPreviewsAreUprightGreyOrMagenta) {
+    const fs::path dir = tempDir("image_codec_previews");
+    Image grey(2, 2, 1);  // bottom row first: (0, 0) is the file's bottom-left texel
+    grey.pixels = {0.25f, 1.5f, 0.0f, -0.5f};
+    writePngPreview(grey, dir / "grey.png", false);
+    writePngPreview(grey, dir / "grey_srgb.png", true);
+    const Image g = imageCodec().read((dir / "grey.png").string());  // rows top first, /255
+    ASSERT_EQ(g.channels, 1);
+    EXPECT_EQ(std::lround(g.at(0, 1, 0) * 255), 64);   // file row 1 = image row 0
+    EXPECT_EQ(std::lround(g.at(1, 1, 0) * 255), 255);  // clamped
+    EXPECT_EQ(std::lround(g.at(1, 0, 0) * 255), 0);    // clamped
+    EXPECT_EQ(std::lround(imageCodec().read((dir / "grey_srgb.png").string()).at(0, 1, 0) * 255), 137);
+    Image broken = grey;
+    broken.pixels[3] = std::nanf("");
+    broken.pixels[2] = -1.0f;
+    writePngPreview(broken, dir / "broken.png", false);
+    const Image b = imageCodec().read((dir / "broken.png").string());
+    ASSERT_EQ(b.channels, 3);
+    for (int x : {0, 1}) {  // image row 1 = file row 0: both magenta
+        EXPECT_EQ(b.at(x, 0, 0), 1.0f);
+        EXPECT_EQ(b.at(x, 0, 1), 0.0f);
+        EXPECT_EQ(b.at(x, 0, 2), 1.0f);
+    }
+    EXPECT_EQ(std::lround(b.at(0, 1, 1) * 255), 64);  // grey spread over RGB
+}
+
 TEST(ImageCodec, ComparisonFiguresAreMeanRmsAndMaxOfTheDifference) {
     Image a(2, 2, 1), b(2, 2, 1);
     a.pixels = {0.0f, 0.5f, 1.0f, 0.25f};

@@ -24,7 +24,8 @@ OIIO::TypeDesc typeOf(sl::SampleType t) {
 }
 
 void write(const std::string& path, int width, int height, int channels, const void* data,
-           sl::SampleType dataType, sl::SampleType fileType, sl::Compression compression) {
+           sl::SampleType dataType, sl::SampleType fileType, sl::Compression compression,
+           bool bottomUp) {
     OIIO::ImageSpec spec(width, height, channels, typeOf(fileType));
     const bool fast = compression == sl::Compression::Fast;
     if (fileType != sl::SampleType::U8) {  // EXR
@@ -37,7 +38,12 @@ void write(const std::string& path, int width, int height, int channels, const v
     spec.attribute("DateTime", "");
     auto out = OIIO::ImageOutput::create(path);
     if (!out) throw std::runtime_error(path + ": " + OIIO::geterror());
-    if (!out->open(path, spec) || !out->write_image(typeOf(dataType), data))
+    // Bottom-first rows: start at the last row and step back (OIIO takes negative strides).
+    const OIIO::TypeDesc type = typeOf(dataType);
+    const OIIO::stride_t row = OIIO::stride_t(width) * channels * OIIO::stride_t(type.size());
+    const char* first = static_cast<const char*>(data) + (bottomUp ? row * (height - 1) : 0);
+    if (!out->open(path, spec) ||
+        !out->write_image(type, first, OIIO::AutoStride, bottomUp ? -row : OIIO::AutoStride))
         throw std::runtime_error(path + ": " + out->geterror());
     out->close();
 }

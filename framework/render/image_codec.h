@@ -26,11 +26,14 @@ struct ImageFigures {
 };
 
 struct ImageCodec {
-    // Writes width × height × channels samples of `dataType`, rows top first, stored as
-    // `fileType` (Half, Float: EXR with zip compression, one channel named "Y"; U8: PNG). No
-    // timestamp, so equal pixels give equal bytes. Throws std::runtime_error naming the file.
+    // Writes width × height × channels samples of `dataType`, stored as `fileType` (Half,
+    // Float: EXR with zip compression, one channel named "Y"; U8: PNG). `data`'s rows are top
+    // first, or bottom first (GL's order) if `bottomUp`: the file is top first either way,
+    // without a flipped copy. No timestamp, so equal pixels give equal bytes. Throws
+    // std::runtime_error naming the file.
     void (*write)(const std::string& path, int width, int height, int channels, const void* data,
-                  SampleType dataType, SampleType fileType, Compression compression);
+                  SampleType dataType, SampleType fileType, Compression compression,
+                  bool bottomUp);
     // Any format OpenImageIO reads, as float, rows top first (Image's rows are not flipped here).
     Image (*read)(const std::string& path);
     ImageFigures (*compare)(const Image& a, const Image& b);

@@ -6,6 +6,7 @@
 #include <dlfcn.h>
 #include <openssl/evp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
@@ -13,14 +14,14 @@
 namespace sl {
 namespace {
 
-// Flips between GL's bottom-first rows and the files' top-first rows.
-std::vector<float> flipRows(const Image& img) {
-    std::vector<float> out(img.pixels.size());
+// Flips between the files' top-first rows and GL's bottom-first rows, in place (a copy of a
+// 16 MiB image costs a fresh allocation, i.e. the kernel zeroing its pages, at every file).
+void flipRowsInPlace(Image& img) {
     const size_t row = size_t(img.width) * img.channels;
-    for (int y = 0; y < img.height; ++y)
-        std::copy_n(img.pixels.begin() + size_t(y) * row, row,
-                    out.begin() + size_t(img.height - 1 - y) * row);
-    return out;
+    for (int y = 0, z = img.height - 1; y < z; ++y, --z)
+        std::swap_ranges(img.pixels.begin() + size_t(y) * row,
+                         img.pixels.begin() + size_t(y + 1) * row,
+                         img.pixels.begin() + size_t(z) * row);
 }
 
 // libshadowlab_oiio.so sits beside the program (build/shadowlab) or one folder up (the test
@@ -55,20 +56,19 @@ const ImageCodec& imageCodec() {
 
 void writeExr(const Image& image, const fs::path& path, SampleType stored,
               Compression compression) {
-    const auto flipped = flipRows(image);
-    imageCodec().write(path.string(), image.width, image.height, image.channels, flipped.data(),
-                       SampleType::Float, stored, compression);
+    imageCodec().write(path.string(), image.width, image.height, image.channels,
+                       image.pixels.data(), SampleType::Float, stored, compression, true);
 }
 
 Image readImage(const fs::path& path) {
     Image img = imageCodec().read(path.string());
-    img.pixels = flipRows(img);
+    flipRowsInPlace(img);
     return img;
 }
 
 void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
-    const int outChannels = image.channels == 1 ? 1 : 3;
-    Image rgb(image.width, image.height, 3);
+    // 8-bit RGB in one pass, in the image's (bottom-first) row order; the codec flips.
+    std::vector<unsigned char> bytes(size_t(image.width) * image.height * 3);
     bool anyBroken = false;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
@@ -78,22 +78,22 @@ void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
                 broken |= !std::isfinite(v) || v == -1.0f;
             }
             anyBroken |= broken;
+            unsigned char* out = &bytes[(size_t(y) * image.width + x) * 3];
             for (int c = 0; c < 3; ++c) {
                 float v = image.at(x, y, std::min(c, image.channels - 1));
                 if (srgb) v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
-                rgb.at(x, y, c) = broken ? (c == 1 ? 0.0f : 1.0f) : std::clamp(v, 0.0f, 1.0f);
+                v = broken ? (c == 1 ? 0.0f : 1.0f) : std::clamp(v, 0.0f, 1.0f);
+                out[c] = static_cast<unsigned char>(std::lround(v * 255.0f));
             }
         }
-    // Grey images stay single-channel unless magenta must show.
-    const int channels = (outChannels == 1 && !anyBroken) ? 1 : 3;
-    std::vector<unsigned char> bytes(size_t(image.width) * image.height * channels);
-    auto flipped = flipRows(rgb);
-    for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
-        for (int c = 0; c < channels; ++c)
-            bytes[i * channels + c] =
-                static_cast<unsigned char>(std::lround(flipped[i * 3 + c] * 255.0f));
+    // Grey images stay single-channel unless magenta must show: keep every third byte.
+    const int channels = (image.channels == 1 && !anyBroken) ? 1 : 3;
+    if (channels == 1) {
+        for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i) bytes[i] = bytes[i * 3];
+        bytes.resize(size_t(image.width) * image.height);
+    }
     imageCodec().write(path.string(), image.width, image.height, channels, bytes.data(),
-                       SampleType::U8, SampleType::U8, Compression::Fast);
+                       SampleType::U8, SampleType::U8, Compression::Fast, true);
 }
 
 namespace {
