@@ -157,8 +157,12 @@ void ReportWriter::add(const TestResult& t, const std::string& image, const Imag
     const bool srgb = image.rfind("final", 0) == 0;
     const int step = stepFor(ref);
     const bool sameSize = student.width == ref.width && student.height == ref.height;
-    // Full-size images where something is wrong and the preview is reduced.
-    const bool full = step > 1 && (c.fraction < 1.0 || c.nonFinite > 0 || !c.error.empty());
+    // Full-size images where something is wrong and the preview is reduced; not where most of
+    // the student's image is the stub value (magenta: the reduced preview says it, and three
+    // full-size PNGs per image were most of a stub grade's report time).
+    const bool stub = sameSize && 2 * c.stubTexels >= long(student.width) * student.height;
+    const bool full =
+        step > 1 && !stub && (c.fraction < 1.0 || c.nonFinite > 0 || !c.error.empty());
     Entry e;
     e.scene = t.scene, e.stage = t.stage, e.image = image, e.hidden = t.hidden;
     e.metrics = c.toJson();

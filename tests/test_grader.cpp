@@ -77,9 +77,16 @@ TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
         EXPECT_NE(t["output"].get<std::string>().find("not implemented"), std::string::npos) << t;
     }
 
-    // The report opens in a browser and shows something.
+    // The report opens in a browser and shows something. Its stub images are reduced previews
+    // only: a full-size copy of an all-magenta image says nothing more.
     const fs::path page = out / "report" / "index.html";
     ASSERT_TRUE(fs::exists(page));
+    int previews = 0;
+    for (const auto& f : fs::directory_iterator(out / "report" / "img")) {
+        EXPECT_EQ(f.path().filename().string().find("_full"), std::string::npos) << f.path();
+        ++previews;
+    }
+    EXPECT_GT(previews, 10);
     if (test::runCommand("command -v chromium").exitCode != 0)
         GTEST_SKIP() << "chromium is not installed (apt-get install chromium): report not opened";
     const fs::path shot = test::tempDir("grader_report_shot") / "shot.png";
