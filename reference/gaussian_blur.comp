@@ -29,9 +29,9 @@
 // rows below. In llvmpipe's order (x fastest) that group runs a whole strip of the image later
 // (width x (8 + 2r) texels: 640 KiB at 1024² and r = 16, 1.3 MiB at 2048²), so the texel comes
 // back from L3 wherever L2 is smaller. Walking the groups in bands 4 groups (256 texels) wide
-// bounds that distance by the band, not the image: r = 16 y went from 3.3-3.9 to 2.2-2.4 copies
-// on a Zen 3 EPYC (512 KiB L2), at 1024² and 2048² alike. Narrower bands lose the prefetched
-// runs along each row (a band of one group top to bottom cost more at r = 8).
+// bounds that distance by the band, not the image: r = 16 y went from 3.2-5.1 to 2.3-2.5
+// copies in most runs on a Zen 3 EPYC (512 KiB L2), and 3.75 -> 2.2 at 2048². Narrower bands
+// lose the prefetched runs along each row (a band of one group cost more at r = 8).
 
 layout(local_size_x = 64, local_size_y = 1) in;
 

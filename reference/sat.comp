@@ -8,16 +8,11 @@
 //
 // Invocation mapping: the framework dispatches 1 × ceil(lineCount / SAT_LINES) work groups.
 // A work group owns SAT_LINES consecutive lines (line = gl_WorkGroupID.y · SAT_LINES + ...),
-// and each line is shared by SAT_CHUNKS invocations that split it into contiguous chunks.
+// and its invocations split them into contiguous chunks (rows: SAT_CHUNKS chunks per row;
+// columns: SAT_LINES chunks per column, 4 columns per invocation; "Work-group shape" below).
 // Chunks are whole tiles (below), so each invocation scans its chunk alone: no shared memory,
 // no barrier. Work per line: n image loads and n stores, i.e. O(n). Any length n >= 1 works
-// (trailing chunks of a short line are empty). llvmpipe runs 8 consecutive invocations as the
-// lanes of one SIMD batch, so the mapping differs per pass. Columns: consecutive invocations
-// take consecutive *lines*, and the lanes read neighbouring texels of a row (about 1.4× faster
-// there). Rows: consecutive invocations take consecutive *chunks* of one line; 8 lines at once
-// would be 8 rows 16 KiB apart at 1024², all in the same L1 set (set index = address mod
-// 4 KiB) with the 8 rows they write, more lines than its 8 ways: row pass 1.6 -> 1.2 copies on a
-// Zen 3 EPYC (at 1000², where rows do not alias, both mappings cost 1.05-1.2).
+// (trailing chunks of a short line are empty).
 //
 // Precision (docs/numerics.md): a plain float32 table grows to ~(width · height) · moment,
 // and its rounding error (~6e-8 relative) swamps a small box's sum once sat_lookup.glsl
@@ -38,7 +33,8 @@
 // consecutive invocations as the lanes of one SIMD vector, so invocation i takes the role
 // i % 8 among 8 and its chunk from i / 8 in both passes:
 //   rows:    the 8 lanes are 8 chunks of one row (8 rows at once would be 16 KiB apart at
-//            1024², all in one L1 set with the rows they write: 1.6 copies instead of 1.0);
+//            1024², all in one L1 set (address mod 4 KiB) with the rows they write, more
+//            lines than its 8 ways: 1.6 copies instead of 1.0-1.2 on a Zen 3 EPYC);
 //   columns: the 8 lanes are 8 quads of neighbouring columns, 4 columns per invocation, so
 //            each step down reads a 512-byte run of a row (one cache line per lane) and has
 //            8 independent lines in flight: 2.8 copies with one column per invocation, 1.4

@@ -44,7 +44,8 @@ void write(const std::string& path, int width, int height, int channels, const v
     // Bottom-first rows: start at the last row and step back (OIIO takes negative strides).
     const OIIO::TypeDesc type = typeOf(dataType);
     const OIIO::stride_t row = OIIO::stride_t(width) * channels * OIIO::stride_t(type.size());
-    const char* first = static_cast<const char*>(data) + (bottomUp ? row * (height - 1) : 0);
+    const char* first =
+        static_cast<const char*>(data) + (bottomUp && height > 0 ? row * (height - 1) : 0);
     if (!out->open(path, spec) ||
         !out->write_image(type, first, OIIO::AutoStride, bottomUp ? -row : OIIO::AutoStride))
         throw std::runtime_error(path + ": " + out->geterror());

@@ -89,7 +89,8 @@ void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
     // Grey images stay single-channel unless magenta must show: keep every third byte.
     const int channels = (image.channels == 1 && !anyBroken) ? 1 : 3;
     if (channels == 1) {
-        for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i) bytes[i] = bytes[i * 3];
+        for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
+            bytes[i] = bytes[i * 3];
         bytes.resize(size_t(image.width) * image.height);
     }
     imageCodec().write(path.string(), image.width, image.height, channels, bytes.data(),
