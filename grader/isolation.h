@@ -22,8 +22,9 @@ struct ChildSpec {
     // Extra environment (name, value), set after the shader-cache defaults below.
     std::vector<std::pair<std::string, std::string>> env;
     // The child's work in this process, returning its exit code: run after fork without exec
-    // while the grader has started no thread (an exec'd child loads the driver again). With threads of its own (a GL context, an image library's
-    // pool) fork is unsafe: then `args` are exec'd as before. Empty: always exec.
+    // while the grader has started no thread (an exec'd child loads the driver again). With
+    // threads of its own (a GL context, an image library's pool) fork is unsafe: then `args`
+    // are exec'd as before. Empty: always exec.
     std::function<int()> run;
 };
 

@@ -1,8 +1,8 @@
 // Tests of the scene's geometry (framework/scene/mesh.cpp): every shape has unit normals and
 // triangles wound counter-clockwise seen from outside, closed shapes are watertight and
 // enclose the right volume, and objects are placed by T * Rz * Ry * Rx * S.
+#include "gl_test_support.h"
 #include "mesh.h"
-#include "paths.h"
 #include "scene.h"
 
 #include <gtest/gtest.h>
@@ -19,10 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace sl;
-
-// The kit's scenes/ (found at run time: no path compiled in, so ccache shares this object
-// between copies of the kit).
-fs::path meshTestScenes() { return repoRoot() / "scenes"; }
 
 // A scratch directory of this test process, for the OBJ files the tests write.
 fs::path scratchDir() {
@@ -204,7 +200,7 @@ TEST(SceneMesh, ObjNormalsFromTheFileAreKept) {
 }
 
 TEST(SceneMesh, StarObjOfThinSceneIsClosed) {
-    const Scene scene = loadScene((meshTestScenes() / "thin.json").string());
+    const Scene scene = loadScene(test::scenePath("thin"));
     for (const Object& o : scene.objects)
         if (o.shape == ShapeType::Mesh) {
             const Mesh m = buildMesh(o, scene);

@@ -1,8 +1,8 @@
 // Tests of the scene format (framework/scene/scene_loader.cpp): every public scene loads and
 // carries probes, and a malformed scene fails with one line that names the file, the JSON
 // path, what was expected and what was found. The shapes themselves: test_mesh.cpp.
+#include "gl_test_support.h"
 #include "mesh.h"
-#include "paths.h"
 #include "scene.h"
 
 #include <gtest/gtest.h>
@@ -21,13 +21,9 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace sl;
 
-// The kit's scenes/ (found at run time: no path compiled in, so ccache shares this object
-// between copies of the kit).
-fs::path sceneTestScenes() { return repoRoot() / "scenes"; }
-
 std::vector<fs::path> publicScenes() {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(sceneTestScenes()))
+    for (const auto& entry : fs::directory_iterator(test::root() / "scenes"))
         if (entry.path().extension() == ".json") files.push_back(entry.path());
     std::sort(files.begin(), files.end());
     return files;
@@ -107,7 +103,7 @@ TEST(SceneFiles, EveryObjectTessellates) {
 }
 
 TEST(SceneFiles, EachSceneExercisesItsCase) {
-    auto load = [](const char* name) { return loadScene((sceneTestScenes() / name).string()); };
+    auto load = [](const char* name) { return loadScene((test::root() / "scenes" / name).string()); };
     const Scene classic = load("classic.json");
     EXPECT_EQ(classic.shadow.filter, FilterKind::Gaussian);
     EXPECT_EQ(classic.shadow.gaussianRadius, 4);

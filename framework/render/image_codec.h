@@ -16,9 +16,9 @@ enum class SampleType { U8, Half, Float };
 
 // How hard the lossless compressor works. Compact: zlib's default level, for files that are
 // kept (goldens, ground truth). Fast: zlib level 1 (PNG: also one row filter), for a render's
-// outputs and previews and the grade report's images, written at every render: the zlib share
-// of a render's CPU drops from ~30 % to ~15 %, the files grow ~7 %. Both are deterministic:
-// equal pixels give equal bytes.
+// outputs and previews and the grade report's images, written at every render (zlib was ~30 %
+// of a render's CPU; the files grow ~7-10 %). Both are deterministic: equal pixels give equal
+// bytes.
 enum class Compression { Compact, Fast };
 
 // OpenImageIO's comparison figures (ImageBufAlgo::compare) over every channel.
