@@ -24,11 +24,15 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <optional>
+#include <set>
 #include <sstream>
 
 namespace sl::grader {
@@ -42,6 +46,7 @@ struct Job {
     ChildResult child;
     bool ran = false;
     bool dropped = false;  // "either" mode: a final of the filter not kept (not rendered, no test)
+    std::string notRunReason;  // not rendered: another scene's render showed the stage a stub
 };
 
 // Phase times on stderr with SHADOWLAB_GRADER_TIMING=1 (docs/performance.md).
@@ -196,6 +201,7 @@ public:
                 finals.push_back(k);
             else stageJobs.push_back(k);
         }
+        stageJobs = scoutsFirst(stageJobs);
         const auto times = readReferenceTimes(o_.referenceImages);
         for (size_t i = 0; i < scenes_.size(); ++i)
             if (times.count(scenes_[i].name)) refSeconds_[i] = times.at(scenes_[i].name);
@@ -255,6 +261,86 @@ public:
     }
 
 private:
+    // Scouts: a stub stage's output is -1 on every scene, so once one render of a stage shows
+    // the stub everywhere (stubEverywhere in worker.json: a filter's whole output, or
+    // computeMoments on every rung of the depth ladder; for msm.glsl the robustness test, -1
+    // on every hard case), its renders of the other scenes, and the finals that use it, are
+    // not run: they would score 0 as "not implemented" all the same. A student's first
+    // `./kit check` on the stubs renders 5 of 25 tests. The first job of each stage (and the
+    // robustness test) runs first; any other outcome of a scout renders everything as before.
+    std::vector<size_t> scoutsFirst(const std::vector<size_t>& order) const {
+        std::vector<size_t> first, rest;
+        std::set<std::string> seen;
+        for (size_t k : order) {
+            const std::string& stage = jobs_[k].stage;
+            const bool scout = jobs_[k].missing.empty() && stage != "final" && seen.insert(stage).second;
+            (scout ? first : rest).push_back(k);
+        }
+        // The robustness test first: it is short, and it is msm.glsl's scout.
+        std::stable_partition(first.begin(), first.end(),
+                              [this](size_t k) { return jobs_[k].stage == "robustness"; });
+        first.insert(first.end(), rest.begin(), rest.end());
+        return first;
+    }
+
+    // The first job of `stage` (a scout), if it is another job than `k`.
+    std::optional<size_t> scoutOf(const std::string& stage, size_t k) const {
+        for (size_t i = 0; i < jobs_.size(); ++i)
+            if (jobs_[i].stage == stage && jobs_[i].missing.empty()) {
+                if (i == k) return std::nullopt;
+                return i;
+            }
+        return std::nullopt;
+    }
+
+    // Whether the scout's finished render showed its stage to be the stub everywhere; false
+    // while it runs (worker.json is written last), if it failed, or if it was not run.
+    bool scoutIsStub(size_t scout) {
+        if (auto known = scoutStub_.find(scout); known != scoutStub_.end()) return known->second;
+        nlohmann::json w;
+        try {
+            std::ifstream in(jobs_[scout].out / "worker.json");
+            if (!in) return false;
+            w = nlohmann::json::parse(in);
+        } catch (const std::exception&) {
+            return false;  // still being written: ask again at the next start
+        }
+        const bool stub = jobs_[scout].stage == "robustness"
+                              ? !w.value("stubNotes", std::vector<std::string>{}).empty()
+                              : w.value("stubEverywhere", false);
+        return scoutStub_[scout] = stub;
+    }
+
+    // skipIf of job k: true (with the reason in notRunReason) if a scout showed a stage it
+    // renders from the submission to be the stub.
+    bool stubbedElsewhere(size_t k) {
+        Job& job = jobs_[k];
+        const GradedScene& gs = scenes_[job.scene];
+        std::vector<std::string> stages;
+        if (job.stage == "final") stages = {"moments", gs.filter, "msm"};
+        else if (job.stage == "moments" || job.stage == "gaussian" || job.stage == "sat" || job.stage == "msm")
+            stages = {job.stage};
+        // What each stage's stub is called in the render's own notes (render_readback.cpp).
+        static const std::map<std::string, std::string> function = {
+            {"moments", "computeMoments"}, {"gaussian", "gaussian blur pass"},
+            {"sat", "prefix-sum pass or satBoxAverage"}, {"msm", "momentShadowIntensity"}};
+        std::string reason;
+        for (const auto& stage : stages) {
+            const auto scout = scoutOf(stage == "msm" ? "robustness" : stage, k);
+            if (!scout || !scoutIsStub(*scout)) continue;
+            std::string files;
+            for (const auto& f : stageFiles(stage, gs.filter)) files += (files.empty() ? "submission/" : " + ") + f;
+            const std::string where = stage == "msm" ? std::string("on every hard case")
+                                                     : "everywhere in the render of " + scenes_[jobs_[*scout].scene].name;
+            reason += files + ": " + function.at(stage) + ": not implemented yet (the stub value -1 " + where + ")\n";
+        }
+        if (reason.empty()) return false;
+        job.notRunReason = reason + "(not rendered: it would show the stub too)\n";
+        return true;
+    }
+
+    std::map<size_t, bool> scoutStub_;  // scout job -> its stage is the stub everywhere
+
     // Files a stage's render compiles from the submission.
     std::vector<std::string> neededFiles(const std::string& stage, const std::string& filter) const {
         // Without reference/, lighting takes relativeDepth from the submission's moments.glsl.
@@ -317,6 +403,7 @@ private:
             const double ref = refSeconds_.count(j.scene) ? refSeconds_.at(j.scene) : 0.0;
             specs.back().timeoutSeconds = j.stage == "reference" ? referenceTimeout(o_) : stageTimeout(o_, ref);
             specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
+            if (j.stage != "reference") specs.back().skipIf = [this, k] { return stubbedElsewhere(k); };
             index.push_back(k);
         }
         // A scoring error fails the grade (results.json says why), once every child has ended.
@@ -363,6 +450,10 @@ private:
         t.hidden = job.stage != "robustness" && gs.hidden;
         if (!job.missing.empty()) {
             t.output = job.missing;
+            return t;
+        }
+        if (job.child.notRun) {
+            t.output = "not implemented: " + job.notRunReason;
             return t;
         }
         if (!(job.child.kind == ChildResult::Exited && job.child.exitCode == 0)) {

@@ -221,6 +221,12 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
                 ++next;
                 continue;
             }
+            if (specs[next].skipIf && specs[next].skipIf()) {
+                results[next].notRun = true;
+                ended.push_back(next);
+                ++next;
+                continue;
+            }
             results[next].limitSeconds = limitOf(next);
             results[next].limitNote = specs[next].limitNote;
             pid_t pid = startChild(specs[next], limits, exe);

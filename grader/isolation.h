@@ -26,6 +26,9 @@ struct ChildSpec {
     // threads of its own (a GL context, an image library's pool) fork is unsafe: then `args`
     // are exec'd as before. Empty: always exec.
     std::function<int()> run;
+    // Asked when this child's turn to start comes: true leaves it unstarted (notRun), e.g.
+    // when another render already showed its stage to be the stub. Empty: always start.
+    std::function<bool()> skipIf;
 };
 
 struct ChildResult {
@@ -36,6 +39,7 @@ struct ChildResult {
     double limitSeconds = 0.0;  // the time limit it ran under
     std::string limitNote;      // ChildSpec::limitNote
     bool skipped = false;       // not run: its group timed out before (kind TimedOut)
+    bool notRun = false;        // not started: its skipIf said so (kind StartFailed)
     std::string log;  // the child's stdout + stderr (first 64 KiB)
 };
 

@@ -78,7 +78,8 @@ TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
     }
 
     // The report opens in a browser and shows something. Its stub images are reduced previews
-    // only: a full-size copy of an all-magenta image says nothing more.
+    // only: a full-size copy of an all-magenta image says nothing more. (Only the scouts'
+    // images: the stub stages' other renders are not run, grade.cpp.)
     const fs::path page = out / "report" / "index.html";
     ASSERT_TRUE(fs::exists(page));
     int previews = 0;
@@ -86,7 +87,7 @@ TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
         EXPECT_EQ(f.path().filename().string().find("_full"), std::string::npos) << f.path();
         ++previews;
     }
-    EXPECT_GT(previews, 10);
+    EXPECT_GE(previews, 6);  // reference, submission and heat-map of >= 2 images
     if (test::runCommand("command -v chromium").exitCode != 0)
         GTEST_SKIP() << "chromium is not installed (apt-get install chromium): report not opened";
     const fs::path shot = test::tempDir("grader_report_shot") / "shot.png";
@@ -95,6 +96,43 @@ TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
     ASSERT_TRUE(fs::exists(shot)) << r.output;
     EXPECT_GT(test::colourSpread(shot), 0.05) << "the screenshot is (nearly) one colour: a blank page";
     EXPECT_GT(fs::file_size(shot), 20000u);
+}
+
+// Scouts (grade.cpp): a stage that is the stub everywhere is rendered once; its other scenes and
+// the finals that use it score 0 unrendered. A stage that is implemented is never skipped.
+TEST(Grader, StubStagesRenderOnceAndAnImplementedStageIsStillGradedEverywhere) {
+    const fs::path out = test::tempDir("grader_scouts");
+    const std::string scenes = " --scenes classic,contact,depth_range,wide_blur --reference golden --no-report --keep-work";
+    auto stubs = test::grade("--submission " + (test::root() / "student").string() + scenes, out / "stubs");
+    ASSERT_EQ(stubs.run.exitCode, 0) << stubs.run.output;
+    // 4 scenes x (moments, filter, msm, final) + robustness = 17 tests; renders: the robustness
+    // test, one moments, one Gaussian and one SAT render, and at most one more per stage that
+    // started before its scout had ended (two run at a time).
+    ASSERT_EQ(stubs.results["tests"].size(), 17u);
+    int renders = 0, unrendered = 0;
+    for (const auto& e : fs::recursive_directory_iterator(out / "stubs"))
+        renders += e.path().filename() == "worker.json";
+    for (const auto& t : stubs.results["tests"]) {
+        EXPECT_EQ(t["score"].get<double>(), 0.0) << t["name"];
+        const std::string text = t["output"].get<std::string>();
+        EXPECT_NE(text.find("not implemented"), std::string::npos) << t;
+        unrendered += text.find("(not rendered: it would show the stub too)") != std::string::npos;
+    }
+    EXPECT_LE(renders, 8) << stubs.run.output;
+    EXPECT_EQ(renders + unrendered, 17) << stubs.run.output;
+
+    // moments.glsl solved, the other stages stubs: moments full on every scene, the rest 0.
+    const fs::path mixed = out / "mixed";
+    fs::copy(test::root() / "student", mixed, fs::copy_options::recursive);
+    fs::copy_file(test::root() / "reference" / "moments.glsl", mixed / "moments.glsl",
+                  fs::copy_options::overwrite_existing);
+    auto g = test::grade("--submission " + mixed.string() + scenes, out / "mixed_out");
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    for (const char* scene : {"classic", "contact", "depth_range", "wide_blur"}) {
+        EXPECT_EQ(g.score(scene, "moments"), g.maxScore(scene, "moments")) << scene << "\n" << g.run.output;
+        EXPECT_EQ(g.score(scene, "msm"), 0.0) << scene;
+        EXPECT_EQ(g.score(scene, "final"), 0.0) << scene;
+    }
 }
 
 TEST(Grader, ResultsJsonIsWrittenEvenWhenTheGraderCannotRun) {
