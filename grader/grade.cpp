@@ -330,8 +330,10 @@ private:
             if (!scout || !scoutIsStub(*scout)) continue;
             std::string files;
             for (const auto& f : stageFiles(stage, gs.filter)) files += (files.empty() ? "submission/" : " + ") + f;
+            const GradedScene& seen = scenes_[jobs_[*scout].scene];
             const std::string where = stage == "msm" ? std::string("on every hard case")
-                                                     : "everywhere in the render of " + scenes_[jobs_[*scout].scene].name;
+                                      : seen.hidden ? std::string("everywhere in another scene's render")
+                                                    : "everywhere in the render of " + seen.name;
             reason += files + ": " + function.at(stage) + ": not implemented yet (the stub value -1 " + where + ")\n";
         }
         if (reason.empty()) return false;

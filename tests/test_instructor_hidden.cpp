@@ -96,7 +96,9 @@ TEST(InstructorHidden, AGradeWithAHiddenSceneShowsStudentsNothingOfIt) {
     const fs::path scene = dir / "private" / "secret_shelf.json";
     fs::copy_file(test::scenePath("contact"), scene);
     const fs::path out = dir / "out";
-    auto g = test::grade("--reference live --scenes classic," + scene.string() +
+    // The hidden scene first: its renders are then the stub stages' scouts (grade.cpp), and the
+    // public scenes' tests they stand in for must not name it.
+    auto g = test::grade("--reference live --scenes " + scene.string() + ",classic" +
                              " --submission " + (test::root() / "student").string(), out);
     ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
     EXPECT_EQ(g.run.output.find("secret_shelf"), std::string::npos) << g.run.output;
@@ -109,6 +111,7 @@ TEST(InstructorHidden, AGradeWithAHiddenSceneShowsStudentsNothingOfIt) {
         const bool isHidden = t["name"].get<std::string>().rfind("secret_shelf", 0) == 0;
         EXPECT_EQ(t["visibility"], isHidden ? "after_due_date" : "visible") << t;
         hidden += isHidden;
+        if (!isHidden) EXPECT_EQ(t["output"].get<std::string>().find("secret_shelf"), std::string::npos) << t;
         if (!isHidden) visibleMax += t["max_score"].get<double>();
     }
     EXPECT_EQ(hidden, 4);  // moments, sat, msm, final
