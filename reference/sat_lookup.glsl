@@ -84,7 +84,8 @@ bool satPart(ivec2 mapSize, vec2 lo, vec2 hi, int tx, int ty,
 // each part's hi (9 reads) are summed over every tile, those at lo.x (6 reads) over the first
 // column, those at lo.y (6) over the first row, T(lo) (4) in the first tile alone: 25 reads for
 // a box inside one tile as before, 64 instead of 100 for 2 x 2 tiles, 121 instead of 225 for
-// 3 x 3 (wide_blur). Four short loops rather than one loop with a branch per corner: llvmpipe
+// 3 x 3 (wide_blur). Loops, not branches, choose what is read: the hi terms in a nested loop,
+// the lo.x terms in its outer one, the lo.y terms in a loop of their own, T(lo) once. llvmpipe
 // runs both sides of every branch, so only a loop's trip count can leave reads out.
 
 // Terms at the part's hi corner, for every tile of the box.
@@ -97,14 +98,16 @@ vec4 satTermsAtHi(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi)
          + (extent.x * extent.y) * texelFetch(sat, origin, 0);
 }
 
-// Terms at lo.x (the box's first tile column): -T(lo.x, hi.y) - (hi.y - lo.y)·A(lo.x).
+// Terms at lo.x, in the box's first tile column: T(lo.x, hi.y) + (hi.y - lo.y)·A(lo.x), which
+// the box subtracts.
 vec4 satTermsAtLoX(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi)
 {
     return satInteriorBelow(sat, origin, vec2(lo.x, hi.y), size)
          + (hi.y - lo.y) * satEdge(sat, origin, lo.x, size.x, 0);
 }
 
-// Terms at lo.y (the box's first tile row): -T(hi.x, lo.y) - (hi.x - lo.x)·B(lo.y).
+// Terms at lo.y, in the box's first tile row: T(hi.x, lo.y) + (hi.x - lo.x)·B(lo.y), which the
+// box subtracts.
 vec4 satTermsAtLoY(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi)
 {
     return satInteriorBelow(sat, origin, vec2(hi.x, lo.y), size)
