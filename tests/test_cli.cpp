@@ -58,6 +58,36 @@ TEST(Cli, UnknownSolutionFolderIsNamed) {
     EXPECT_NE(r.output.find("/nonexistent/x"), std::string::npos) << r.output;
 }
 
+// compare --sheet-only (./kit demo's sheets): the same sheet and technique images, nothing else.
+TEST(Cli, CompareSheetOnlyWritesTheSameSheetAndOnlyEachTechniquesFinalImage) {
+    const fs::path out = test::tempDir("cli_compare");
+    const std::string base = test::shadowlabBinary() + " compare --scene " + test::scenePath("classic").string() +
+                             " --techniques hard,vsm,msm4 --solution reference --size 64 --out ";
+    auto full = test::runCommand(base + (out / "full").string());
+    ASSERT_EQ(full.exitCode, 0) << full.output;
+    auto sheet = test::runCommand(base + (out / "sheet").string() + " --sheet-only");
+    ASSERT_EQ(sheet.exitCode, 0) << sheet.output;
+    int files = 0;
+    for (const auto& e : fs::recursive_directory_iterator(out / "sheet"))
+        if (e.is_regular_file()) {
+            ++files;
+            const std::string name = e.path().filename().string();
+            EXPECT_TRUE(name == "final.png" || name == "sheet.png" || name == "sheet.html") << e.path();
+        }
+    EXPECT_EQ(files, 3 + 2);  // a final.png per technique, the sheet's PNG and HTML
+    EXPECT_TRUE(fs::exists(out / "full" / "vsm" / "final.exr"));
+    auto bytes = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    // The technique images are the same bytes; the sheet itself labels each with its time.
+    for (const char* f : {"hard/final.png", "vsm/final.png", "msm4/final.png"}) {
+        ASSERT_TRUE(fs::exists(out / "sheet" / f)) << f;
+        EXPECT_TRUE(bytes(out / "sheet" / f) == bytes(out / "full" / f)) << f << " differs";
+    }
+    EXPECT_GT(fs::file_size(out / "sheet" / "sheet.png"), fs::file_size(out / "sheet" / "vsm" / "final.png"));
+}
+
 TEST(Cli, BenchRunsAndReportsRatios) {
     auto r = test::runCommand(test::shadowlabBinary() + " bench --size 64 --repeats 3");
     ASSERT_EQ(r.exitCode, 0) << r.output;
