@@ -342,6 +342,7 @@ private:
     }
 
     std::map<size_t, bool> scoutStub_;  // scout job -> its stage is the stub everywhere
+    const bool timing_ = std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr;  // per-job times too
 
     // Files a stage's render compiles from the submission.
     std::vector<std::string> neededFiles(const std::string& stage, const std::string& filter) const {
@@ -414,6 +415,11 @@ private:
                                    [&](size_t i, const ChildResult& r) {
                                        jobs_[index[i]].child = r;
                                        jobs_[index[i]].ran = true;
+                                       if (timing_)
+                                           std::cerr << "grade: " << jobs_[index[i]].stage << " "
+                                                     << scenes_[jobs_[index[i]].scene].name << ": "
+                                                     << (r.notRun ? "not run (a stub)" : std::to_string(r.seconds) + " s")
+                                                     << "\n";
                                        if (jobs_[index[i]].stage == "reference" || failed) return;
                                        try {
                                            scoreReady();
