@@ -417,7 +417,10 @@ private:
                                        jobs_[index[i]].ran = true;
                                        if (timing_)
                                            std::cerr << "grade: " << jobs_[index[i]].stage << " "
-                                                     << scenes_[jobs_[index[i]].scene].name << ": "
+                                                     << (jobs_[index[i]].stage == "robustness"
+                                                             ? std::string("hard cases")
+                                                             : scenes_[jobs_[index[i]].scene].name)
+                                                     << ": "
                                                      << (r.notRun ? "not run (a stub)" : std::to_string(r.seconds) + " s")
                                                      << "\n";
                                        if (jobs_[index[i]].stage == "reference" || failed) return;
