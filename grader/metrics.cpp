@@ -19,12 +19,6 @@ bool finiteTexel(const Image& img, size_t i) {
     return true;
 }
 
-bool stubTexel(const Image& img, size_t i) {
-    for (int c = 0; c < img.channels; ++c)
-        if (img.pixels[i * img.channels + c] != -1.0f) return false;
-    return true;
-}
-
 std::string mismatch(const Image& s, const Image& r) {
     if (s.width == r.width && s.height == r.height && s.channels == r.channels) return "";
     auto d = [](const Image& i) {
@@ -50,7 +44,7 @@ void countCommon(const Image& s, const Image& r, Comparison& out) {
     const size_t n = size_t(s.width) * s.height;
     for (size_t i = 0; i < n; ++i) {
         if (!finiteTexel(s, i)) ++out.nonFinite;
-        if (stubTexel(s, i) && !stubTexel(r, i)) ++out.stubTexels;
+        if (s.stubTexel(i) && !r.stubTexel(i)) ++out.stubTexels;
     }
 }
 

@@ -48,14 +48,6 @@ ShaderLibrary makeLibrary(const WorkerArgs& a) {
     return ShaderLibrary::mixed(other, mine, repoRoot(), sub.parent_path());
 }
 
-// Every texel of `image` holds the stub value -1 in every channel.
-bool allStub(const Image& image) {
-    if (image.pixels.empty()) return false;
-    for (float v : image.pixels)
-        if (v != -1.0f) return false;
-    return true;
-}
-
 }  // namespace
 
 RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered) {
@@ -170,7 +162,7 @@ void runWorker(const WorkerArgs& a) {
     const std::string shown = a.stage == "moments" ? kDepthLadderImage : stageImage(a.stage);
     if (a.stage == "moments" || a.stage == "gaussian" || a.stage == "sat")
         if (auto it = result.images.find(shown); it != result.images.end())
-            stubEverywhere = allStub(it->second);
+            stubEverywhere = it->second.allStub();
     const ContextInfo& info = context->info();
     nlohmann::json j = {{"stage", a.stage},
                         {"scene", scene.name},

@@ -23,6 +23,19 @@ struct Image {
         return pixels[(std::size_t(y) * width + x) * channels + c];
     }
     bool empty() const { return pixels.empty(); }
+
+    // The stub value: an unimplemented student stage writes -1 to every channel (student/*).
+    // Texel i (x + y·width) holds it in every channel; every texel does (false if empty).
+    bool stubTexel(std::size_t i) const {
+        for (int c = 0; c < channels; ++c)
+            if (pixels[i * channels + c] != -1.0f) return false;
+        return true;
+    }
+    bool allStub() const {
+        for (float v : pixels)
+            if (v != -1.0f) return false;
+        return !pixels.empty();
+    }
 };
 
 }  // namespace sl

@@ -5,23 +5,12 @@
 #include <algorithm>
 
 namespace sl::render_detail {
-namespace {
-
-bool isStubTexel(const Image& img, int x, int y) {
-    for (int c = 0; c < img.channels; ++c)
-        if (img.at(x, y, c) != -1.0f) return false;
-    return true;
-}
-
-}  // namespace
-
 bool stubOutput(const Image& out, const Image* in, bool everywhere) {
-    for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x) {
-            const bool stub = isStubTexel(out, x, y);
-            if (everywhere && !stub) return false;
-            if (!everywhere && stub && !(in && isStubTexel(*in, x, y))) return true;
-        }
+    for (std::size_t i = 0, n = std::size_t(out.width) * out.height; i < n; ++i) {
+        const bool stub = out.stubTexel(i);
+        if (everywhere && !stub) return false;
+        if (!everywhere && stub && !(in && in->stubTexel(i))) return true;
+    }
     return everywhere;
 }
 
