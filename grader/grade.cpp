@@ -262,53 +262,51 @@ public:
 
 private:
     // Scouts: a stub stage's output is -1 on every scene, so once one render of a stage shows
-    // the stub everywhere (stubEverywhere in worker.json: a filter's whole output, or
-    // computeMoments on every rung of the depth ladder; for msm.glsl the robustness test, -1
-    // on every hard case), its renders of the other scenes, and the finals that use it, are
-    // not run: they would score 0 as "not implemented" all the same. A student's first
-    // `./kit check` on the stubs renders 5 of 25 tests. The first job of each stage (and the
-    // robustness test) runs first; any other outcome of a scout renders everything as before.
-    std::vector<size_t> scoutsFirst(const std::vector<size_t>& order) const {
+    // the stub everywhere, its renders of the other scenes, and the finals that use it, are not
+    // run: they would score 0 as "not implemented" all the same. A student's first `./kit check`
+    // on the stubs renders 5 of 25 tests. The scouts run first: the robustness test speaks for
+    // msm.glsl (-1 on every hard case), the first moments, gaussian and sat renders for their
+    // stages (stubEverywhere in worker.json: computeMoments -1 on every rung of the depth
+    // ladder, a filter's whole output -1). Any other outcome of a scout renders everything.
+    std::vector<size_t> scoutsFirst(const std::vector<size_t>& order) {
         std::vector<size_t> first, rest;
-        std::set<std::string> seen;
         for (size_t k : order) {
-            const std::string& stage = jobs_[k].stage;
-            const bool scout = jobs_[k].missing.empty() && stage != "final" && seen.insert(stage).second;
+            const Job& j = jobs_[k];
+            const std::string stage = j.stage == "robustness" ? "msm" : j.stage;
+            const bool scout = j.missing.empty() && stage != "final" && (stage != "msm" || j.stage == "robustness") &&
+                               scouts_.emplace(stage, k).second;
             (scout ? first : rest).push_back(k);
         }
-        // The robustness test first: it is short, and it is msm.glsl's scout.
         std::stable_partition(first.begin(), first.end(),
-                              [this](size_t k) { return jobs_[k].stage == "robustness"; });
+                              [this](size_t k) { return jobs_[k].stage == "robustness"; });  // short
         first.insert(first.end(), rest.begin(), rest.end());
         return first;
     }
 
-    // The first job of `stage` (a scout), if it is another job than `k`.
-    std::optional<size_t> scoutOf(const std::string& stage, size_t k) const {
-        for (size_t i = 0; i < jobs_.size(); ++i)
-            if (jobs_[i].stage == stage && jobs_[i].missing.empty()) {
-                if (i == k) return std::nullopt;
-                return i;
-            }
-        return std::nullopt;
-    }
-
-    // Whether the scout's finished render showed its stage to be the stub everywhere; false
-    // while it runs (worker.json is written last), if it failed, or if it was not run.
-    bool scoutIsStub(size_t scout) {
-        if (auto known = scoutStub_.find(scout); known != scoutStub_.end()) return known->second;
+    // The note of a finished scout whose stage is the stub everywhere: its own stub note
+    // (computeMoments, momentShadowIntensity) or, for a filter, the stage's files. "" if it is
+    // not a stub, failed or was not run; nullopt while it runs (worker.json is written last).
+    std::optional<std::string> scoutNote(size_t scout) {
+        if (auto known = scoutNote_.find(scout); known != scoutNote_.end()) return known->second;
         nlohmann::json w;
         try {
             std::ifstream in(jobs_[scout].out / "worker.json");
-            if (!in) return false;
+            if (!in) return jobs_[scout].ran ? std::optional<std::string>("") : std::nullopt;
             w = nlohmann::json::parse(in);
         } catch (const std::exception&) {
-            return false;  // still being written: ask again at the next start
+            return std::nullopt;  // still being written: ask again at the next start
         }
-        const bool stub = jobs_[scout].stage == "robustness"
-                              ? !w.value("stubNotes", std::vector<std::string>{}).empty()
-                              : w.value("stubEverywhere", false);
-        return scoutStub_[scout] = stub;
+        const Job& j = jobs_[scout];
+        const auto notes = w.value("stubNotes", std::vector<std::string>{});
+        std::string note;
+        if (j.stage == "robustness" ? !notes.empty() : w.value("stubEverywhere", false)) {
+            for (const auto& f : stageFiles(j.stage, ""))
+                note += (note.empty() ? "submission/" : " + ") + f;
+            note += ": not implemented yet (its output is the stub value -1)";
+            for (const auto& n : notes)
+                if (n.find("submission/" + stageFiles(j.stage, "").front()) != std::string::npos) note = n;
+        }
+        return scoutNote_[scout] = note;
     }
 
     // skipIf of job k: true (with the reason in notRunReason) if a scout showed a stage it
@@ -316,32 +314,31 @@ private:
     bool stubbedElsewhere(size_t k) {
         Job& job = jobs_[k];
         const GradedScene& gs = scenes_[job.scene];
-        std::vector<std::string> stages;
-        if (job.stage == "final") stages = {"moments", gs.filter, "msm"};
-        else if (job.stage == "moments" || job.stage == "gaussian" || job.stage == "sat" || job.stage == "msm")
-            stages = {job.stage};
-        // What each stage's stub is called in the render's own notes (render_readback.cpp).
-        static const std::map<std::string, std::string> function = {
-            {"moments", "computeMoments"}, {"gaussian", "gaussian blur pass"},
-            {"sat", "prefix-sum pass or satBoxAverage"}, {"msm", "momentShadowIntensity"}};
+        const std::vector<std::string> stages =
+            job.stage == "final" ? std::vector<std::string>{"moments", gs.filter, "msm"}
+                                 : std::vector<std::string>{job.stage};
         std::string reason;
         for (const auto& stage : stages) {
-            const auto scout = scoutOf(stage == "msm" ? "robustness" : stage, k);
-            if (!scout || !scoutIsStub(*scout)) continue;
-            std::string files;
-            for (const auto& f : stageFiles(stage, gs.filter)) files += (files.empty() ? "submission/" : " + ") + f;
-            const GradedScene& seen = scenes_[jobs_[*scout].scene];
+            const auto scout = scouts_.find(stage);
+            if (scout == scouts_.end() || scout->second == k) continue;
+            const auto note = scoutNote(scout->second);
+            if (!note || note->empty()) continue;
+            const GradedScene& seen = scenes_[jobs_[scout->second].scene];
             const std::string where = stage == "msm" ? std::string("on every hard case")
                                       : seen.hidden ? std::string("everywhere in another scene's render")
                                                     : "everywhere in the render of " + seen.name;
-            reason += files + ": " + function.at(stage) + ": not implemented yet (the stub value -1 " + where + ")\n";
+            reason += *note + "; " + where + "\n";
         }
         if (reason.empty()) return false;
         job.notRunReason = reason + "(not rendered: it would show the stub too)\n";
         return true;
     }
 
-    std::map<size_t, bool> scoutStub_;  // scout job -> its stage is the stub everywhere
+    // The test's scene as results.json names it.
+    std::string testScene(const Job& j) const { return j.stage == "robustness" ? "hard cases" : scenes_[j.scene].name; }
+
+    std::map<std::string, size_t> scouts_;      // stage -> the job that speaks for it
+    std::map<size_t, std::string> scoutNote_;   // finished scout -> its stub note, "" if none
     const bool timing_ = std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr;  // per-job times too
 
     // Files a stage's render compiles from the submission.
@@ -417,10 +414,7 @@ private:
                                        jobs_[index[i]].ran = true;
                                        if (timing_)
                                            std::cerr << "grade: " << jobs_[index[i]].stage << " "
-                                                     << (jobs_[index[i]].stage == "robustness"
-                                                             ? std::string("hard cases")
-                                                             : scenes_[jobs_[index[i]].scene].name)
-                                                     << ": "
+                                                     << testScene(jobs_[index[i]]) << ": "
                                                      << (r.notRun ? "not run (a stub)" : std::to_string(r.seconds) + " s")
                                                      << "\n";
                                        if (jobs_[index[i]].stage == "reference" || failed) return;
@@ -456,7 +450,7 @@ private:
     TestResult score(const Job& job, ReportWriter* report) {
         const GradedScene& gs = scenes_[job.scene];
         TestResult t;
-        t.scene = job.stage == "robustness" ? "hard cases" : gs.name;  // one name, pass or fail
+        t.scene = testScene(job);  // one name, pass or fail
         t.stage = job.stage;
         t.hidden = job.stage != "robustness" && gs.hidden;
         if (!job.missing.empty()) {
