@@ -98,20 +98,14 @@ vec4 satTermsAtHi(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi)
          + (extent.x * extent.y) * texelFetch(sat, origin, 0);
 }
 
-// Terms at lo.x, in the box's first tile column: T(lo.x, hi.y) + (hi.y - lo.y)·A(lo.x), which
-// the box subtracts.
-vec4 satTermsAtLoX(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi)
+// Terms at the part's lo along `axis`, for the box's first tile column (axis 0) or row (1):
+// T at (lo.x, hi.y) or (hi.x, lo.y), plus the extent across times A(lo.x) or B(lo.y); the box
+// subtracts them. `axis` is a constant at each call, so the selects fold away.
+vec4 satTermsAtLo(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi, int axis)
 {
-    return satInteriorBelow(sat, origin, vec2(lo.x, hi.y), size)
-         + (hi.y - lo.y) * satEdge(sat, origin, lo.x, size.x, 0);
-}
-
-// Terms at lo.y, in the box's first tile row: T(hi.x, lo.y) + (hi.x - lo.x)·B(lo.y), which the
-// box subtracts.
-vec4 satTermsAtLoY(sampler2D sat, ivec2 origin, ivec2 size, vec2 lo, vec2 hi)
-{
-    return satInteriorBelow(sat, origin, vec2(hi.x, lo.y), size)
-         + (hi.x - lo.x) * satEdge(sat, origin, lo.y, size.y, 1);
+    vec2 corner = axis == 0 ? vec2(lo.x, hi.y) : vec2(hi.x, lo.y);
+    float across = axis == 0 ? hi.y - lo.y : hi.x - lo.x;
+    return satInteriorBelow(sat, origin, corner, size) + across * satEdge(sat, origin, lo[axis], size[axis], axis);
 }
 
 // Mean of the moments over the box of size boxSize (>= 1 texel, fractional allowed) centred
@@ -144,13 +138,13 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
             ++tx;
         } while (tx <= tileHi.x);
         if (satPart(size, lo, hi, tileLo.x, ty, origin, tileSize, partLo, partHi))
-            sum -= satTermsAtLoX(sat, origin, tileSize, partLo, partHi);
+            sum -= satTermsAtLo(sat, origin, tileSize, partLo, partHi, 0);
         ++ty;
     } while (ty <= tileHi.y);
     int tx = tileLo.x;
     do {
         if (satPart(size, lo, hi, tx, tileLo.y, origin, tileSize, partLo, partHi))
-            sum -= satTermsAtLoY(sat, origin, tileSize, partLo, partHi);
+            sum -= satTermsAtLo(sat, origin, tileSize, partLo, partHi, 1);
         ++tx;
     } while (tx <= tileHi.x);
     if (satPart(size, lo, hi, tileLo.x, tileLo.y, origin, tileSize, partLo, partHi))
