@@ -82,7 +82,10 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
         case ChildResult::TimedOut:
             return "timed out after " + fmt(c.limitSeconds, 0) + " s" + c.limitNote +
                    ": the render was stopped (look for a loop that never ends)" +
-                   (c.skipped ? "; not run here: this stage timed out on another scene" : "");
+                   (!c.skipped ? ""
+                    : c.skippedAfter.empty() ? "; not run here: this stage timed out on another scene"
+                    : "; not run here: the " + c.skippedAfter +
+                          " stage timed out, and this render runs its files too");
         case ChildResult::Signalled: return "crashed: " + signalName(c.signal);
         case ChildResult::StartFailed: return "the grader could not start its worker";
         case ChildResult::Exited: break;
@@ -404,6 +407,9 @@ private:
             specs.back().timeoutSeconds = j.stage == "reference" ? referenceTimeout(o_) : stageTimeout(o_, ref);
             specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
             if (j.stage != "reference") specs.back().skipIf = [this, k] { return stubbedElsewhere(k); };
+            // A final runs the moments, filter and msm stages' files: once one of those stages
+            // has timed out (it loops), the finals would wait out their limits too.
+            if (j.stage == "final") specs.back().alsoRuns = {"moments", scenes_[j.scene].filter, "msm"};
             index.push_back(k);
         }
         // A scoring error fails the grade (results.json says why), once every child has ended.
@@ -423,7 +429,8 @@ private:
                                        } catch (...) {
                                            failed = std::current_exception();
                                        }
-                                   });
+                                   },
+                                   &timedOut_);
         if (failed) std::rethrow_exception(failed);
         for (size_t k = 0; k < results.size(); ++k) {
             Job& j = jobs_[index[k]];
@@ -596,6 +603,7 @@ private:
     fs::path goldens_;
     nlohmann::json running_;  // backend/renderer/Mesa of the workers
     std::map<size_t, double> refSeconds_;  // scene -> its reference render's seconds
+    TimedOutGroups timedOut_;  // stage -> its first timeout, over every phase of stage renders
     std::vector<Job> jobs_;                // every render, in scoring order
     size_t scored_ = 0;                    // jobs_[0, scored_) are scored
     std::vector<TestResult> tests_;

@@ -199,7 +199,8 @@ std::string signalName(int sig) {
 
 std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const Limits& limits,
                                      int parallel,
-                                     const std::function<void(size_t, const ChildResult&)>& done) {
+                                     const std::function<void(size_t, const ChildResult&)>& done,
+                                     TimedOutGroups* timedOut) {
     std::vector<ChildResult> results(specs.size());
     const std::string exe = selfExecutable();
     std::vector<Running> running;
@@ -207,15 +208,24 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
     auto limitOf = [&](size_t i) {
         return specs[i].timeoutSeconds > 0 ? specs[i].timeoutSeconds : limits.timeoutSeconds;
     };
-    std::map<std::string, ChildResult> timedOutGroups;  // group -> the first timeout
+    TimedOutGroups own;
+    TimedOutGroups& timedOutGroups = timedOut ? *timedOut : own;
+    // The first timed-out group among a child's own and those it also runs.
+    auto timedOutBefore = [&](const ChildSpec& spec) -> const TimedOutGroups::value_type* {
+        std::vector<std::string> groups = {spec.group};
+        groups.insert(groups.end(), spec.alsoRuns.begin(), spec.alsoRuns.end());
+        for (const auto& g : groups)
+            if (auto t = timedOutGroups.find(g); !g.empty() && t != timedOutGroups.end()) return &*t;
+        return nullptr;
+    };
     std::vector<size_t> ended;  // not yet handed to `done`
     // Starts children up to `parallel`.
     auto startMore = [&] {
         while (next < specs.size() && int(running.size()) < std::max(1, parallel)) {
-            const std::string& group = specs[next].group;
-            if (auto t = timedOutGroups.find(group); !group.empty() && t != timedOutGroups.end()) {
+            if (const auto* t = timedOutBefore(specs[next])) {
                 results[next] = t->second;  // the same reason, without the same wait
                 results[next].skipped = true;
+                results[next].skippedAfter = t->first == specs[next].group ? "" : t->first;
                 results[next].log.clear();
                 ended.push_back(next);
                 ++next;

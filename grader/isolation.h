@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct ChildSpec {
     // Children of one group (a stage): once one times out, the group's children not started
     // yet are not run; they get the same TimedOut result (skipped = true). "" : no group.
     std::string group;
+    // Other groups whose code this child runs too (a final render runs the moments, filter and
+    // msm stages' files): once one of them has timed out, this child is not run either.
+    std::vector<std::string> alsoRuns;
     // (text, replacement) pairs applied to the log: the grader's own paths never reach a
     // student's message ("/work/kit/shaders/x" -> "shaders/x").
     std::vector<std::pair<std::string, std::string>> scrub;
@@ -39,6 +43,7 @@ struct ChildResult {
     double limitSeconds = 0.0;  // the time limit it ran under
     std::string limitNote;      // ChildSpec::limitNote
     bool skipped = false;       // not run: its group timed out before (kind TimedOut)
+    std::string skippedAfter;   // skipped because this group of alsoRuns timed out ("": its own)
     bool notRun = false;        // not started: its skipIf said so (kind StartFailed)
     std::string log;  // the child's stdout + stderr (first 64 KiB)
 };
@@ -60,11 +65,16 @@ void loadBeforeForking(const std::function<void()>& load);
 // The path of the running executable (/proc/self/exe): workers are this binary.
 std::string selfExecutable();
 
+// The first timeout of each group: children of a timed-out group are not started.
+using TimedOutGroups = std::map<std::string, ChildResult>;
+
 // Runs every spec, at most `parallel` at a time; `done(i, result)` is called as each ends,
 // after the children that take the freed places have started (it may do slow work).
+// `timedOut`, if given, carries the groups' timeouts from one call to the next.
 std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const Limits& limits,
                                      int parallel,
-                                     const std::function<void(size_t, const ChildResult&)>& done = {});
+                                     const std::function<void(size_t, const ChildResult&)>& done = {},
+                                     TimedOutGroups* timedOut = nullptr);
 
 std::string signalName(int signal);  // "SIGSEGV (Segmentation fault)"
 
