@@ -210,10 +210,12 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
     };
     TimedOutGroups own;
     TimedOutGroups& timedOutGroups = timedOut ? *timedOut : own;
-    // The first timed-out group among a child's own and those it also runs.
+    // The first timed-out group among those a child also runs and its own: the stages it runs
+    // first, as they are what loops when both timed out (a loop in moments.glsl stops the
+    // moments render and the final alike; either may end first).
     auto timedOutBefore = [&](const ChildSpec& spec) -> const TimedOutGroups::value_type* {
-        std::vector<std::string> groups = {spec.group};
-        groups.insert(groups.end(), spec.alsoRuns.begin(), spec.alsoRuns.end());
+        std::vector<std::string> groups = spec.alsoRuns;
+        groups.push_back(spec.group);
         for (const auto& g : groups)
             if (auto t = timedOutGroups.find(g); !g.empty() && t != timedOutGroups.end()) return &*t;
         return nullptr;
