@@ -2,6 +2,8 @@
 //   border     most of an image's failing texels lie in a band along its edge (a red frame
 //              in the heat-map): the filter's or the lookup's border rule;
 //   SAT only   points lost on SAT scenes only, while Gaussian scenes pass the same stages;
+//   far        a SAT stage's failing texels lie in the half of the map away from the table's
+//              origin, where its sums are largest: a plain float table's rounding;
 //   NaN        non-finite values in an image, or NaN/Inf among the failing hard cases;
 //   bias       failing hard cases in the sets whose Hankel matrix is singular without the
 //              moment bias (constant depth, two/three points, c3 = 0, 16-bit moments);
@@ -46,6 +48,9 @@ ImageFindings findImageProblems(const Image& e, long nonFinite) {
                 ++f.failing;
                 const int edge = std::min(std::min(x, e.width - 1 - x), std::min(y, e.height - 1 - y));
                 if (edge < f.band) ++f.failingNearBorder, f.reach = std::max(f.reach, edge + 1);
+                // x/W + y/H > 1: the half of the map whose table entries sum the most texels.
+                if (double(x) * e.height + double(y) * e.width > double(e.width) * e.height)
+                    ++f.failingFar;
             }
         }
     return f;
@@ -70,6 +75,23 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
                            : f.stage == "gaussian" ? " (taps outside the map clamp to the edge "
                                                      "texel, docs/stage_contract.md)"
                                                    : "") + ".");
+    }
+
+    // Far from the origin: a float table's entry S(x, y) sums (x+1)(y+1) texels and rounds in
+    // proportion, so its box averages fail where x and y are large. Failures of a wrong corner
+    // or area fall on both halves alike (16 of them all on one half by chance: 1 in 65 536);
+    // those of a border rule lie in the frame (the finding above), often its far edges.
+    for (const auto& f : images) {
+        if (!shown(f.hidden) || f.stage != "sat" || f.failing < 16 ||
+            f.failingFar < 0.9 * f.failing || f.failingNearBorder >= 0.9 * f.failing)
+            continue;
+        out.push_back(f.scene + " (sat, " + f.image + "): " +
+                      percent(double(f.failingFar) / f.failing) + " of the " +
+                      std::to_string(f.failing) + " texels outside tolerance lie in the half of "
+                      "the map away from texel (0, 0), where the table's sums are largest: a "
+                      "float sum of up to a million texels keeps too few digits for a small box's "
+                      "average (store the table with an offset, or in tiles: docs/numerics.md, "
+                      "section 5).");
     }
 
     // SAT only / Gaussian only: the scenes' filters, from the filter tests that exist.

@@ -18,6 +18,7 @@ struct ImageFindings {
     long failingNearBorder = 0;  // of those, within `band` texels of the image's edge
     int band = 0;
     int reach = 0;             // the farthest of those from the edge, plus one (texels)
+    long failingFar = 0;       // of the failing ones, in the half away from texel (0, 0)
     long nonFinite = 0;
 };
 

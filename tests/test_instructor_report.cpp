@@ -140,6 +140,33 @@ TEST(InstructorReport, FailuresOnlyOnSatScenesAndNaNAreNamed) {
     EXPECT_FALSE(fs::exists(out / "report-staff"));          // no hidden scene, no staff page
 }
 
+// A plain float table fails where its sums are largest, away from texel (0, 0) (the fragile
+// naive_sat: 100 % of contact's 37 889 failing texels): the report says so. A wrong corner
+// fails on both halves, a border rule in the frame: neither is called a float table's rounding.
+TEST(InstructorReport, SatFailuresAwayFromTheTablesOriginAreCalledItsPrecision) {
+    const Image img(64, 64, 3, 0.2f);
+    auto page = [&](const std::string& name, const std::function<bool(int, int)>& bad) {
+        const fs::path out = test::tempDir("instructor_report_far_" + name);
+        ReportWriter report(out / "report");
+        GradeSummary s;
+        s.referenceMode = "live";
+        s.tests = {result("contact", "sat", 5, 20)};
+        report.add(s.tests[0], "moments_filtered", img, img, comparison(64, bad));
+        report.finish(s);
+        return test::readText(out / "report" / "index.html");
+    };
+    const std::string far = "away from texel (0, 0)";
+    const std::string rounding = page("rounding", [](int x, int y) { return x + y > 80 && x < 58 && y < 58 && (x + y) % 3 == 0; });
+    EXPECT_NE(rounding.find("contact (sat, moments_filtered): 100% of the"), std::string::npos) << rounding;
+    EXPECT_NE(rounding.find(far), std::string::npos) << rounding;
+    EXPECT_EQ(rounding.find("border rule"), std::string::npos);
+    const std::string everywhere = page("everywhere", [](int x, int y) { return (x + 2 * y) % 7 == 0; });
+    EXPECT_EQ(everywhere.find(far), std::string::npos) << everywhere;
+    const std::string frame = page("frame", [](int x, int y) { return x > 61 || y > 61; });
+    EXPECT_NE(frame.find("border rule"), std::string::npos) << frame;
+    EXPECT_EQ(frame.find(far), std::string::npos) << frame;
+}
+
 // Two real mutants (a Gaussian that mirrors at the border, an MSM without the moment bias):
 // the report says both in words.
 TEST(InstructorReport, ARealGradeNamesTheBorderAndTheMomentBias) {
