@@ -8,7 +8,7 @@ set(longest_tests
   KitStudent.TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand 66
   CatalogueGrade.MutantsLoseOnlyOnTheirStageAlternativesScoreFull 66
   ReadmeCommands.EveryReadmeAndHandoutCommandRunsAsWritten 56
-  HostileTimeouts.TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated 22
+  HostileTimeouts.TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated 18
   KitGradescope.SetupAndRunAutograderGradeACorrectSubmissionToFullMarks 19
   Grader.CommittedGoldensMatchALiveReferenceRender 15
   FairnessGrade.EitherFilterGivesTheFilterPointsToTheImplementedOne 14
