@@ -79,7 +79,7 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
 
     // Far from the origin: a float table's entry S(x, y) sums (x+1)(y+1) texels and rounds in
     // proportion, so its box averages fail where x and y are large. Failures of a wrong corner
-    // or area fall on both halves alike (16 of them all on one half by chance: 1 in 65 536);
+    // or area fall on both halves alike (15 of 16 on the far half by chance: 1 in 3 855);
     // those of a border rule lie in the frame (the finding above), often its far edges.
     for (const auto& f : images) {
         if (!shown(f.hidden) || f.stage != "sat" || f.failing < 16 ||
