@@ -97,6 +97,9 @@ private:
 double gaussianGoal(int radius) { return radius == 8 ? 1.3 : radius == 16 ? 2.0 : 0.0; }
 constexpr double kSatGoal = 1.5;          // both passes vs two copy passes
 constexpr double kSatLightingGoal = 1.2;  // lighting with SAT lookup vs bilinear fetch
+// Copy passes further apart than this (slowest / fastest repeat) mark a busy machine (a busy
+// Zen 3, 2026-12-01: 7.23-16.53 ms in one run of 21, ratios 1.5x those of a quiet day).
+constexpr double kBusyCopySpread = 1.5;
 
 double lightingMillis(const RenderResult& result, const PassPlan& plan) {
     double ms = 0;
@@ -210,6 +213,8 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
     report.size = size;
     report.repeats = repeats;
     report.copyMedianMs = median(copyMs);
+    report.copyMinMs = *std::min_element(copyMs.begin(), copyMs.end());
+    report.copyMaxMs = *std::max_element(copyMs.begin(), copyMs.end());
     report.tileCopyMedianMs = median(tileMs);
     report.tileCopyTexels = tileCopy.texels();
     // Every row but the lighting one is measured in copy passes: against both copies.
@@ -251,6 +256,16 @@ std::string formatBenchReport(const BenchReport& report) {
                       row.ratioMin, row.ratioMax, benchVerdict(row).c_str(), tiled);
         out += line;
     }
+    // The same copy of the same texture, repeated: when its times lie far apart, something else
+    // ran on the machine, and ratios near a goal can land on either side of it in the next run.
+    if (report.copyMinMs > 0 && report.copyMaxMs > kBusyCopySpread * report.copyMinMs) {
+        std::snprintf(line, sizeof line,
+                      "\nbusy machine: the copy pass took %.2f–%.2f ms over the repeats (more than "
+                      "%.1f× apart); a verdict whose goal lies inside its row's spread may differ "
+                      "in the next run: rerun with more --repeats, or when the machine is quiet\n",
+                      report.copyMinMs, report.copyMaxMs, kBusyCopySpread);
+        out += line;
+    }
     return out;
 }
 
@@ -277,6 +292,8 @@ std::string benchReportJson(const BenchReport& report) {
     return nlohmann::json{{"size", report.size},
                           {"repeats", report.repeats},
                           {"copyMs", report.copyMedianMs},
+                          {"copyMinMs", report.copyMinMs},
+                          {"copyMaxMs", report.copyMaxMs},
                           {"tileCopyMs", report.tileCopyMedianMs},
                           {"tileCopyTexels", report.tileCopyTexels},
                           {"rows", rows}}

@@ -38,6 +38,7 @@ struct BenchReport {
     int size = 0;
     int repeats = 0;
     double copyMedianMs = 0;      // copy.comp, one texel per invocation
+    double copyMinMs = 0, copyMaxMs = 0;  // its fastest and slowest repeat: the machine's noise
     double tileCopyMedianMs = 0;  // copy_tile.comp: the row "copy, <N> texels per invocation"
     int tileCopyTexels = 0;       // its N
     std::vector<BenchRow> rows;
