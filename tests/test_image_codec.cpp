@@ -41,7 +41,7 @@ TEST(ImageCodec, FilesRoundTripUpright) {
     for (size_t i = 0; i < img.pixels.size(); ++i)
         EXPECT_NEAR(half.pixels[i], img.pixels[i], 1e-3) << i;
     // The file's first row is the image's top row (Image stores the bottom row first).
-    const Image raw = imageCodec().read((dir / "f.exr").string());
+    const Image raw = imageCodec().read((dir / "f.exr").string(), false);
     EXPECT_EQ(raw.at(0, 0, 0), img.at(0, 1, 0));
 }
 
@@ -71,17 +71,17 @@ TEST(ImageCodec, PngPreviewsAreUprightGreyOrMagenta) {
     grey.pixels = {0.25f, 1.5f, 0.0f, -0.5f};
     writePngPreview(grey, dir / "grey.png", false);
     writePngPreview(grey, dir / "grey_srgb.png", true);
-    const Image g = imageCodec().read((dir / "grey.png").string());  // rows top first, /255
+    const Image g = imageCodec().read((dir / "grey.png").string(), false);  // rows top first, /255
     ASSERT_EQ(g.channels, 1);
     EXPECT_EQ(std::lround(g.at(0, 1, 0) * 255), 64);   // file row 1 = image row 0
     EXPECT_EQ(std::lround(g.at(1, 1, 0) * 255), 255);  // clamped
     EXPECT_EQ(std::lround(g.at(1, 0, 0) * 255), 0);    // clamped
-    EXPECT_EQ(std::lround(imageCodec().read((dir / "grey_srgb.png").string()).at(0, 1, 0) * 255), 137);
+    EXPECT_EQ(std::lround(imageCodec().read((dir / "grey_srgb.png").string(), false).at(0, 1, 0) * 255), 137);
     Image broken = grey;
     broken.pixels[3] = std::nanf("");
     broken.pixels[2] = -1.0f;
     writePngPreview(broken, dir / "broken.png", false);
-    const Image b = imageCodec().read((dir / "broken.png").string());
+    const Image b = imageCodec().read((dir / "broken.png").string(), false);
     ASSERT_EQ(b.channels, 3);
     for (int x : {0, 1}) {  // image row 1 = file row 0: both magenta
         EXPECT_EQ(b.at(x, 0, 0), 1.0f);

@@ -52,12 +52,17 @@ void write(const std::string& path, int width, int height, int channels, const v
     out->close();
 }
 
-sl::Image read(const std::string& path) {
+// Bottom-first rows, as write(): the file's first row goes to the last row, strides step back.
+sl::Image read(const std::string& path, bool bottomUp) {
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw std::runtime_error(path + ": " + OIIO::geterror());
     const auto& spec = in->spec();
     sl::Image img(spec.width, spec.height, spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, img.pixels.data()))
+    const OIIO::stride_t row = OIIO::stride_t(spec.width) * spec.nchannels * OIIO::stride_t(sizeof(float));
+    char* first = reinterpret_cast<char*>(img.pixels.data()) +
+                  (bottomUp && spec.height > 0 ? row * (spec.height - 1) : 0);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, first, OIIO::AutoStride,
+                        bottomUp ? -row : OIIO::AutoStride))
         throw std::runtime_error(path + ": " + in->geterror());
     return img;
 }

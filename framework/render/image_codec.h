@@ -35,8 +35,9 @@ struct ImageCodec {
     void (*write)(const std::string& path, int width, int height, int channels, const void* data,
                   SampleType dataType, SampleType fileType, Compression compression,
                   bool bottomUp);
-    // Any format OpenImageIO reads, as float, rows top first (Image's rows are not flipped here).
-    Image (*read)(const std::string& path);
+    // Any format OpenImageIO reads, as float: rows top first, or bottom first (GL's order, as
+    // Image holds them) if `bottomUp`, read into place without a flipped copy.
+    Image (*read)(const std::string& path, bool bottomUp);
     ImageFigures (*compare)(const Image& a, const Image& b);
     // A grid of `columns` PNGs (8-bit), each under a label band ("" leaves it empty), as a PNG.
     void (*contactSheet)(const std::string& path, const std::vector<std::string>& images,

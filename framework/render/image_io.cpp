@@ -14,16 +14,6 @@
 namespace sl {
 namespace {
 
-// Flips between the files' top-first rows and GL's bottom-first rows, in place (a copy of a
-// 16 MiB image costs a fresh allocation, i.e. the kernel zeroing its pages, at every file).
-void flipRowsInPlace(Image& img) {
-    const size_t row = size_t(img.width) * img.channels;
-    for (int y = 0, z = img.height - 1; y < z; ++y, --z)
-        std::swap_ranges(img.pixels.begin() + size_t(y) * row,
-                         img.pixels.begin() + size_t(y + 1) * row,
-                         img.pixels.begin() + size_t(z) * row);
-}
-
 // libshadowlab_oiio.so sits beside the program (build/shadowlab) or one folder up (the test
 // binary in build/tests/).
 const ImageCodec* loadCodec() {
@@ -61,9 +51,7 @@ void writeExr(const Image& image, const fs::path& path, SampleType stored,
 }
 
 Image readImage(const fs::path& path) {
-    Image img = imageCodec().read(path.string());
-    flipRowsInPlace(img);
-    return img;
+    return imageCodec().read(path.string(), true);
 }
 
 void writePngPreview(const Image& image, const fs::path& path, bool srgb) {
