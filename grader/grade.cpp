@@ -312,16 +312,19 @@ private:
         return scoutNote_[scout] = note;
     }
 
+    // The stages whose submission files a job's render runs: a final runs the moments stage's,
+    // its scene's filter's and msm's; any other job its own stage's.
+    std::vector<std::string> stagesRun(const Job& job) const {
+        if (job.stage == "final") return {"moments", scenes_[job.scene].filter, "msm"};
+        return {job.stage};
+    }
+
     // skipIf of job k: true (with the reason in notRunReason) if a scout showed a stage it
     // renders from the submission to be the stub.
     bool stubbedElsewhere(size_t k) {
         Job& job = jobs_[k];
-        const GradedScene& gs = scenes_[job.scene];
-        const std::vector<std::string> stages =
-            job.stage == "final" ? std::vector<std::string>{"moments", gs.filter, "msm"}
-                                 : std::vector<std::string>{job.stage};
         std::string reason;
-        for (const auto& stage : stages) {
+        for (const auto& stage : stagesRun(job)) {
             const auto scout = scouts_.find(stage);
             if (scout == scouts_.end() || scout->second == k) continue;
             const auto note = scoutNote(scout->second);
@@ -407,9 +410,9 @@ private:
             specs.back().timeoutSeconds = j.stage == "reference" ? referenceTimeout(o_) : stageTimeout(o_, ref);
             specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
             if (j.stage != "reference") specs.back().skipIf = [this, k] { return stubbedElsewhere(k); };
-            // A final runs the moments, filter and msm stages' files: once one of those stages
-            // has timed out (it loops), the finals would wait out their limits too.
-            if (j.stage == "final") specs.back().alsoRuns = {"moments", scenes_[j.scene].filter, "msm"};
+            // Once a stage whose files a final runs has timed out (it loops), the finals not
+            // started yet would wait out their limits too.
+            if (j.stage == "final") specs.back().alsoRuns = stagesRun(j);
             index.push_back(k);
         }
         // A scoring error fails the grade (results.json says why), once every child has ended.
