@@ -189,14 +189,10 @@ TEST(FilterBenchmark, TableAndJsonCarryTheTiledRatioColumn) {
 // Copy passes far apart over the repeats: the table says the machine was busy (and JSON holds
 // the copy's fastest and slowest repeat); close together: no such line.
 TEST(FilterBenchmark, ABusyMachineIsSaidUnderTheTable) {
-    BenchReport report;
-    report.size = 32;
-    report.repeats = 3;
-    report.copyMedianMs = 6.0;
-    report.copyMinMs = 5.0;
-    report.copyMaxMs = 9.0;
-    report.rows = {BenchRow{.name = "copy", .medianMs = 6.0, .baselineMs = 6.0, .ratio = 1.0,
-                            .ratioMin = 1.0, .ratioMax = 1.0, .baseline = "copy"}};
+    BenchReport report{.size = 32, .repeats = 3, .copyMedianMs = 6.0, .copyMinMs = 5.0,
+                       .copyMaxMs = 9.0,
+                       .rows = {{.name = "copy", .medianMs = 6.0, .baselineMs = 6.0, .ratio = 1.0,
+                                 .ratioMin = 1.0, .ratioMax = 1.0, .baseline = "copy"}}};
     const std::string busy = formatBenchReport(report);
     EXPECT_NE(busy.find("busy machine: the copy pass took 5.00–9.00 ms"), std::string::npos) << busy;
     const auto json = nlohmann::json::parse(benchReportJson(report));
