@@ -1,5 +1,5 @@
 // The command line: outputs and sidecar of `render`, and clear errors for bad input.
-#include "gl_test_support.h"
+#include "kit_test_support.h"
 
 #include <nlohmann/json.hpp>
 
@@ -76,14 +76,10 @@ TEST(Cli, CompareSheetOnlyWritesTheSameSheetAndOnlyEachTechniquesFinalImage) {
         }
     EXPECT_EQ(files, 3 + 2);  // a final.png per technique, the sheet's PNG and HTML
     EXPECT_TRUE(fs::exists(out / "full" / "vsm" / "final.exr"));
-    auto bytes = [](const fs::path& p) {
-        std::ifstream in(p, std::ios::binary);
-        return std::string(std::istreambuf_iterator<char>(in), {});
-    };
     // The technique images are the same bytes; the sheet itself labels each with its time.
     for (const char* f : {"hard/final.png", "vsm/final.png", "msm4/final.png"}) {
         ASSERT_TRUE(fs::exists(out / "sheet" / f)) << f;
-        EXPECT_TRUE(bytes(out / "sheet" / f) == bytes(out / "full" / f)) << f << " differs";
+        EXPECT_TRUE(test::readFile(out / "sheet" / f) == test::readFile(out / "full" / f)) << f << " differs";
     }
     EXPECT_GT(fs::file_size(out / "sheet" / "sheet.png"), fs::file_size(out / "sheet" / "vsm" / "final.png"));
 }
