@@ -15,7 +15,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 namespace sl::test {
@@ -28,6 +30,14 @@ inline GlContext& sharedContext() {
 
 inline fs::path root() { return repoRoot(); }
 inline fs::path scenePath(const std::string& name) { return root() / "scenes" / (name + ".json"); }
+
+// A file's bytes as they are (text or binary).
+inline std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
 
 inline ShaderLibrary library(const std::string& solution) {
     return ShaderLibrary::forSolution(resolveSolution(solution), root());

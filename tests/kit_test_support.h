@@ -21,13 +21,6 @@ namespace sl::test {
 // build/ (or build-<name>/): the folder holding this test binary's tests/ folder.
 inline fs::path buildDir() { return fs::read_symlink("/proc/self/exe").parent_path().parent_path(); }
 
-inline std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // The command lines a Markdown file shows: lines of ```sh code blocks and inline code spans
 // that start with `./kit ` or `build/shadowlab ` (a span's line breaks become spaces), with a
 // trailing `# comment` removed, in the order of the file.

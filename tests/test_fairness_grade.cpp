@@ -11,7 +11,7 @@ namespace {
 // The reference with the given stage files taken from student/ (the stubs).
 fs::path withStubs(const std::string& name, const std::vector<std::string>& stubs) {
     std::map<std::string, std::string> replace;
-    for (const auto& f : stubs) replace[f] = test::readText(test::root() / "student" / f);
+    for (const auto& f : stubs) replace[f] = test::readFile(test::root() / "student" / f);
     return test::makeSubmission(name, replace);
 }
 
@@ -95,7 +95,7 @@ TEST(FairnessGrade, EitherFilterGivesTheFilterPointsToTheImplementedOne) {
 TEST(FairnessGrade, StubbedRelativeDepthIsNotImplementedAndBorderBugsNameTheirTexel) {
     // relativeDepth is the stub, computeMoments is right: the shadow map holds (-1, 1, -1, 1),
     // which is no stub value; the depth ladder tells.
-    std::string moments = test::readText(test::root() / "reference" / "moments.glsl");
+    std::string moments = test::readFile(test::root() / "reference" / "moments.glsl");
     const std::string clamp = "return clamp((lightDepth - depthRange.x) / (depthRange.y - depthRange.x), 0.0, 1.0);";
     ASSERT_NE(moments.find(clamp), std::string::npos);
     moments.replace(moments.find(clamp), clamp.size(), "return -1.0;");
@@ -103,7 +103,7 @@ TEST(FairnessGrade, StubbedRelativeDepthIsNotImplementedAndBorderBugsNameTheirTe
     // The mirror mutant of the catalogue: only the map's border is off.
     const fs::path mirror = test::makeSubmission(
         "gaussian_mirror",
-        {{"gaussian_blur.comp", test::readText(test::root() / "tests" / "submissions" / "mutants" /
+        {{"gaussian_blur.comp", test::readFile(test::root() / "tests" / "submissions" / "mutants" /
                                                "gaussian_edge_mirror" / "gaussian_blur.comp")}});
     // Both in one --batch: the reference renders once for the two.
     auto graded = test::gradeBatch({{"relative_depth_stub", stub}, {"gaussian_mirror", mirror}},

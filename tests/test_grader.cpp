@@ -159,7 +159,7 @@ TEST(Grader, BatchWritesOneRowPerSubmission) {
                               " -j 2 --scenes classic --no-report --out " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("2/2"), std::string::npos) << r.output;  // progress bar
-    std::string csv = test::readText(out / "scores.csv");
+    std::string csv = test::readFile(out / "scores.csv");
     EXPECT_NE(csv.find("submission,total,max,moments,gaussian,sat,msm,robustness,final"), std::string::npos) << csv;
     EXPECT_NE(csv.find("alice,100.00,100.00"), std::string::npos) << csv;
     EXPECT_NE(csv.find("bob,0.00,100.00"), std::string::npos) << csv;
@@ -201,8 +201,8 @@ namespace sl {
 TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
     const fs::path naive = test::root() / "tests/submissions/fragile/naive_sat";
     fs::path sub = test::makeSubmission(
-        "naive_sat", {{"sat.comp", test::readText(naive / "sat.comp")},
-                      {"sat_lookup.glsl", test::readText(naive / "sat_lookup.glsl")}});
+        "naive_sat", {{"sat.comp", test::readFile(naive / "sat.comp")},
+                      {"sat_lookup.glsl", test::readFile(naive / "sat_lookup.glsl")}});
     auto g = test::grade("--submission " + sub.string() + " --scenes contact,wide_blur --no-report",
                          test::tempDir("grader_naive_sat_out"));
     ASSERT_FALSE(g.results.is_null()) << g.run.output;
@@ -222,7 +222,7 @@ TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
         const fs::path dir = test::root() / "tests/submissions" / variant;
         const std::string tag = dir.filename().string();
         subs[tag] = test::makeSubmission("fragile_" + tag,
-                                         {{"msm.glsl", test::readText(dir / "msm.glsl")}});
+                                         {{"msm.glsl", test::readFile(dir / "msm.glsl")}});
     }
     auto graded = test::gradeBatch(subs, "--scenes classic --no-report",
                                    test::tempDir("grader_fragile_out"));
@@ -246,7 +246,7 @@ namespace sl {
 TEST(Grader, MsmIsIsolatedAgainstGoldensToo) {
     const fs::path mutant = test::root() / "tests/submissions/mutants/moments_powers_shifted";
     fs::path sub = test::makeSubmission(
-        "msm_isolated", {{"moments.glsl", test::readText(mutant / "moments.glsl")}});
+        "msm_isolated", {{"moments.glsl", test::readFile(mutant / "moments.glsl")}});
     auto g = test::grade("--reference golden --submission " + sub.string() +
                              " --scenes classic,contact --no-report",
                          test::tempDir("grader_msm_isolated_out"));

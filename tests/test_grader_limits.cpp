@@ -10,7 +10,7 @@ namespace {
 
 // The reference msm.glsl with its function renamed, and `body` as the graded function.
 std::string msmWith(const std::string& body) {
-    std::string ref = test::readText(test::root() / "reference" / "msm.glsl");
+    std::string ref = test::readFile(test::root() / "reference" / "msm.glsl");
     ref = std::regex_replace(ref, std::regex(R"(float\s+momentShadowIntensity\s*\()"),
                              "float referenceShadowIntensity(");
     return ref + "\nfloat momentShadowIntensity(vec4 b, float zf)\n{\n" + body + "\n}\n";
@@ -35,7 +35,7 @@ TEST(GraderLimits, InfiniteLoopInMsmTimesOutAndCostsOnlyItsStages) {
 }
 
 TEST(GraderLimits, CompileErrorNamesTheStudentsFileAndLine) {
-    std::string msm = test::readText(test::root() / "reference" / "msm.glsl");
+    std::string msm = test::readFile(test::root() / "reference" / "msm.glsl");
     const int lines = int(std::count(msm.begin(), msm.end(), '\n'));
     auto sub = test::makeSubmission("compile", {{"msm.glsl", msm + "this is not glsl;\n"}});
     auto g = test::grade("--scenes contact --no-report --submission " + sub.string(),

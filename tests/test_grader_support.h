@@ -12,13 +12,6 @@
 
 namespace sl::test {
 
-inline std::string readText(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 // A submission folder: the reference's five files, with `replace` (file -> text) written over
 // them and the files in `drop` left out.
 inline fs::path makeSubmission(const std::string& name,
@@ -30,7 +23,7 @@ inline fs::path makeSubmission(const std::string& name,
         if (std::find(drop.begin(), drop.end(), f) != drop.end()) continue;
         auto it = replace.find(f);
         std::ofstream(dir / f) << (it != replace.end() ? it->second
-                                                        : readText(root() / "reference" / f));
+                                                        : readFile(root() / "reference" / f));
     }
     return dir;
 }
@@ -87,7 +80,7 @@ inline std::map<std::string, Graded> gradeBatch(const std::map<std::string, fs::
         const bool tests = g.results.is_object() && g.results.contains("tests") &&
                            !g.results["tests"].empty();
         g.run = {run.exitCode != 0 ? run.exitCode : tests ? 0 : 1,
-                 readText(out / (name + ".log")) + run.output};
+                 readFile(out / (name + ".log")) + run.output};
     }
     return graded;
 }

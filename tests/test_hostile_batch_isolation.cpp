@@ -27,7 +27,7 @@ TEST(HostileBatchIsolation, AGraderCrashOnOneSubmissionCostsOnlyThatOne) {
     EXPECT_EQ(bob["score"].get<double>(), 0.0);
     EXPECT_NE(bob["output"].get<std::string>().find("the grader crashed (SIGSEGV"), std::string::npos)
         << bob.dump(1);
-    const std::string csv = test::readText(out / "scores.csv");
+    const std::string csv = test::readFile(out / "scores.csv");
     EXPECT_NE(csv.find("\nalice,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("\nbob,0.00,"), std::string::npos) << csv;
     EXPECT_NE(csv.find("the grader crashed"), std::string::npos) << csv;

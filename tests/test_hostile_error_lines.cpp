@@ -17,7 +17,7 @@ std::string firstError(const std::string& scene, const std::string& file, int& l
     const fs::path dir = test::tempDir("error_lines_" + file);
     for (const auto& name : stageFileNames())
         fs::copy_file(test::root() / "reference" / name, dir / name);
-    std::string text = test::readText(dir / file);
+    std::string text = test::readFile(dir / file);
     if (!text.empty() && text.back() != '\n') text += '\n';
     line = int(std::count(text.begin(), text.end(), '\n')) + 2;
     text += "float hostileHelper(float zf)\n{ return undeclaredThing + zf; }\n";
@@ -67,8 +67,8 @@ TEST(HostileErrorLines, LineAndExtensionDirectivesAreRefused) {
         }
     }
     // ... and so does the grader's intake, per file, with the line.
-    std::string msm = test::readText(test::root() / "reference" / "msm.glsl");
-    std::string moments = test::readText(test::root() / "reference" / "moments.glsl");
+    std::string msm = test::readFile(test::root() / "reference" / "msm.glsl");
+    std::string moments = test::readFile(test::root() / "reference" / "moments.glsl");
     auto sub = test::makeSubmission("directives", {{"msm.glsl", "#line 40 0\n" + msm},
                                                    {"moments.glsl", "#extension GL_EXT_x : enable\n" + moments}});
     auto g = test::grade("--scenes classic --no-report --submission " + sub.string(),

@@ -8,7 +8,7 @@
 namespace sl {
 
 TEST(HostileGradeHygiene, NoShaderCacheAndNoAbsolutePathsInMessages) {
-    std::string moments = test::readText(test::root() / "reference" / "moments.glsl");
+    std::string moments = test::readFile(test::root() / "reference" / "moments.glsl");
     moments += "float hostileHelper() { return undeclaredThing; }\n";
     auto sub = test::makeSubmission("hygiene", {{"moments.glsl", moments}});
     const fs::path cache = test::tempDir("hygiene_cache");

@@ -42,8 +42,8 @@ TEST(HostileOutFolder, AnOutThatTouchesTheSubmissionOrTheKitIsRefused) {
         EXPECT_NE(r.output.find(why), std::string::npos) << r.output;
         EXPECT_EQ(r.output.find("results:"), std::string::npos) << "no results path:\n" << r.output;
     }
-    EXPECT_EQ(test::readText(sub / "report" / "mine.txt"), "the student's own notes\n");
-    EXPECT_EQ(test::readText(victim), "untouched\n");
+    EXPECT_EQ(test::readFile(sub / "report" / "mine.txt"), "the student's own notes\n");
+    EXPECT_EQ(test::readFile(victim), "untouched\n");
     EXPECT_FALSE(fs::exists(root / "scenes" / "results.json"));
     EXPECT_FALSE(fs::exists(root / "scenes" / "goldens" / "x"));
 }
@@ -58,9 +58,9 @@ TEST(HostileOutFolder, ALinkPlantedInOutIsReplacedNotFollowed) {
     fs::create_symlink(victim, out / "results.json");
     const auto r = gradeInto(sub, out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_EQ(test::readText(victim), "untouched\n");
+    EXPECT_EQ(test::readFile(victim), "untouched\n");
     EXPECT_FALSE(fs::is_symlink(out / "results.json"));
-    EXPECT_NE(test::readText(out / "results.json").find("\"tests\""), std::string::npos);
+    EXPECT_NE(test::readFile(out / "results.json").find("\"tests\""), std::string::npos);
 }
 
 }  // namespace sl

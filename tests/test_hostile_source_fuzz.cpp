@@ -111,8 +111,8 @@ TEST(HostileSourceFuzz, DriverLogsOfAnyShapeAreMappedWithoutRegex) {
 }
 
 TEST(HostileSourceFuzz, TheWorstFilesAreGradedWithResultsWritten) {
-    const std::string moments = test::readText(test::root() / "reference" / "moments.glsl");
-    const std::string sat = test::readText(test::root() / "reference" / "sat.comp");
+    const std::string moments = test::readFile(test::root() / "reference" / "moments.glsl");
+    const std::string sat = test::readFile(test::root() / "reference" / "sat.comp");
     std::mt19937 rng(3);
     auto sub = test::makeSubmission(
         "fuzz_worst", {{"moments.glsl", moments + std::string(40000, ' ') + "\n"},

@@ -13,7 +13,7 @@ namespace sl {
 
 TEST(HostileTimeouts, TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated) {
     // Nested loops: llvmpipe cuts each after 65 535 iterations, so this runs ~4e9 per texel.
-    std::string moments = test::readText(test::root() / "reference" / "moments.glsl");
+    std::string moments = test::readFile(test::root() / "reference" / "moments.glsl");
     const std::string head = "vec4 computeMoments(float z)\n{\n";
     ASSERT_NE(moments.find(head), std::string::npos) << "the reference's function changed";
     moments.replace(moments.find(head), head.size(),

@@ -124,11 +124,11 @@ TEST(InstructorHidden, AGradeWithAHiddenSceneShowsStudentsNothingOfIt) {
         << g.run.output;  // the table's total: "0.00/<visible max>"
 
     // report/ (may be forwarded): no hidden name, no hidden image; report-staff/ has them, marked.
-    const std::string page = test::readText(out / "report" / "index.html");
+    const std::string page = test::readFile(out / "report" / "index.html");
     EXPECT_EQ(page.find("secret_shelf"), std::string::npos);
     for (const auto& f : fs::recursive_directory_iterator(out / "report"))
         EXPECT_EQ(f.path().filename().string().find("secret_shelf"), std::string::npos) << f.path();
-    const std::string staff = test::readText(out / "report-staff" / "index.html");
+    const std::string staff = test::readFile(out / "report-staff" / "index.html");
     EXPECT_NE(staff.find("secret_shelf"), std::string::npos);
     EXPECT_NE(staff.find("hidden-badge"), std::string::npos);
     // (Its SAT render: the scene's other stub stages are not rendered, grade.cpp's scouts.)

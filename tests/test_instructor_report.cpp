@@ -76,7 +76,7 @@ TEST(InstructorReport, SummaryPatternsTablesFullSizeImagesAndNoHiddenScene) {
     for (const auto& t : s.tests) s.score += t.score, s.maxScore += t.maxScore;
     report.finish(s);
 
-    const std::string page = test::readText(out / "report" / "index.html");
+    const std::string page = test::readFile(out / "report" / "index.html");
     // The summary comes first, one row per stage, with the points of visible tests only.
     const size_t summary = page.find("<h2>Summary</h2>");
     ASSERT_NE(summary, std::string::npos);
@@ -115,7 +115,7 @@ TEST(InstructorReport, SummaryPatternsTablesFullSizeImagesAndNoHiddenScene) {
     EXPECT_EQ(h, 1024);
 
     // The staff page: the hidden scene, marked, its images in report-staff/; links resolve.
-    const std::string staff = test::readText(out / "report-staff" / "index.html");
+    const std::string staff = test::readFile(out / "report-staff" / "index.html");
     EXPECT_NE(staff.find("secret_shelf</a> <span class=\"hidden-badge\">hidden</span>"), std::string::npos);
     EXPECT_NE(staff.find("Shadowlab grade: 36.50 / 55.00"), std::string::npos);
     for (const auto& l : links(staff)) EXPECT_TRUE(fs::exists(out / "report-staff" / l)) << l;
@@ -133,7 +133,7 @@ TEST(InstructorReport, FailuresOnlyOnSatScenesAndNaNAreNamed) {
                result("wide_blur", "sat", 15, 20)};
     report.add(s.tests[3], "final", img, img, comparison(64, [](int x, int y) { return x == 30 && y < 9; }, 9));
     report.finish(s);
-    const std::string page = test::readText(out / "report" / "index.html");
+    const std::string page = test::readFile(out / "report" / "index.html");
     EXPECT_NE(page.find("only on the SAT scenes (contact, wide_blur)"), std::string::npos) << page;
     EXPECT_NE(page.find("NaN or Inf values in the final stage's output (contact)"), std::string::npos);
     EXPECT_EQ(page.find("border rule"), std::string::npos);  // a column in the middle is no frame
@@ -153,7 +153,7 @@ TEST(InstructorReport, SatFailuresAwayFromTheTablesOriginAreCalledItsPrecision) 
         s.tests = {result("contact", "sat", 5, 20)};
         report.add(s.tests[0], "moments_filtered", img, img, comparison(64, bad));
         report.finish(s);
-        return test::readText(out / "report" / "index.html");
+        return test::readFile(out / "report" / "index.html");
     };
     const std::string far = "away from texel (0, 0)";
     const std::string rounding = page("rounding", [](int x, int y) { return x + y > 80 && x < 58 && y < 58 && (x + y) % 3 == 0; });
@@ -172,12 +172,12 @@ TEST(InstructorReport, SatFailuresAwayFromTheTablesOriginAreCalledItsPrecision) 
 TEST(InstructorReport, ARealGradeNamesTheBorderAndTheMomentBias) {
     const fs::path sub = test::makeSubmission(
         "instructor_report_mutants",
-        {{"gaussian_blur.comp", test::readText(test::root() / "tests/submissions/mutants/gaussian_edge_mirror/gaussian_blur.comp")},
-         {"msm.glsl", test::readText(test::root() / "tests/submissions/mutants/msm_no_moment_bias/msm.glsl")}});
+        {{"gaussian_blur.comp", test::readFile(test::root() / "tests/submissions/mutants/gaussian_edge_mirror/gaussian_blur.comp")},
+         {"msm.glsl", test::readFile(test::root() / "tests/submissions/mutants/msm_no_moment_bias/msm.glsl")}});
     const fs::path out = test::tempDir("instructor_report_mutants_out");
     auto g = test::grade("--reference live --scenes classic --submission " + sub.string(), out);
     ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
-    const std::string page = test::readText(out / "report" / "index.html");
+    const std::string page = test::readFile(out / "report" / "index.html");
     EXPECT_NE(page.find("classic (gaussian, moments_filtered)"), std::string::npos) << page;
     EXPECT_NE(page.find("check the border rule"), std::string::npos) << page;
     EXPECT_NE(page.find("the moment bias looks missing"), std::string::npos) << page;
