@@ -12,7 +12,8 @@ namespace sl::grader {
 // Paths (relative to the kit's root, '/'-separated) that never go into the student kit:
 // reference/, tests/oracles/ (double-precision mirrors of every stage), tests/submissions/
 // (mutants and correct alternatives), scenes/hidden/ (with their goldens), the exact 4MSM
-// (framework/numerics/msm_exact.cpp), docs/catalogue.md (describes the submissions), and the
+// (framework/numerics/msm_exact.cpp), docs/catalogue.md (describes the submissions),
+// docs/performance_log.md (the measurements of the reference's designs), and the
 // tests that need any of these (found by their includes and text, see studentKitDroppedTests).
 bool leftOutOfStudentKit(const std::string& rel, const std::set<std::string>& droppedTests);
 

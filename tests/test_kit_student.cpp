@@ -17,10 +17,11 @@ std::vector<std::string> lines(const std::string& text) {
 }
 
 // What no student may get: a solution, its mirrors, the exact solver, the mutants and correct
-// alternatives, hidden scenes and their goldens. Returns the offending entries.
+// alternatives, hidden scenes and their goldens, the log of the reference's measured designs.
+// Returns the offending entries.
 std::vector<std::string> solutionBearing(const std::vector<std::string>& entries) {
     static const std::regex bad(
-        R"(^shadowlab/(reference/|tests/oracles/|tests/submissions/|scenes/hidden/|framework/numerics/msm_exact\.cpp|docs/catalogue\.md)|(^|/)goldens/.*hidden)");
+        R"(^shadowlab/(reference/|tests/oracles/|tests/submissions/|scenes/hidden/|framework/numerics/msm_exact\.cpp|docs/catalogue\.md|docs/performance_log\.md)|(^|/)goldens/.*hidden)");
     std::vector<std::string> out;
     for (const auto& e : entries)
         if (std::regex_search(e, bad)) out.push_back(e);
@@ -35,8 +36,9 @@ TEST(KitStudent, SolutionBearingPathsAreRecognised) {
                                   "shadowlab/tests/submissions/mutants/a/msm.glsl",
                                   "shadowlab/framework/numerics/msm_exact.cpp",
                                   "shadowlab/scenes/hidden/goldens/shelf/final.exr",
+                                  "shadowlab/docs/performance_log.md",
                                   "shadowlab/student/msm.glsl", "shadowlab/framework/numerics/msm_exact.h"});
-    EXPECT_EQ(found.size(), 5u) << testing::PrintToString(found);
+    EXPECT_EQ(found.size(), 6u) << testing::PrintToString(found);
 }
 
 TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
@@ -78,6 +80,9 @@ TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
             EXPECT_TRUE(fs::exists((kit / doc).parent_path() / (*it)[1].str()))
                 << doc << " links to a missing " << (*it)[1].str();
     }
+
+    // performance.md ships without its instructor blocks, so without a pointer at the log.
+    EXPECT_EQ(test::readFile(kit / "docs/performance.md").find("performance_log"), std::string::npos);
 
     // Build the program as `./kit demo` does, and time it.
     const auto t0 = Clock::now();
