@@ -61,6 +61,8 @@ struct TestResult {
     nlohmann::json metrics;   // per image: fraction within tolerance, OIIO figures, NaN count
     std::vector<std::string> images;  // compared image names (report)
     double fraction = 0.0;    // the fraction of points earned (before scaling to maxScore)
+    // Fewer points than the test is worth (beyond the rounding of the points' sums).
+    bool lostPoints() const { return score < maxScore - 1e-9; }
 };
 
 struct GradeSummary {

@@ -95,8 +95,6 @@ std::string anchor(const std::string& scene, const std::string& stage) {
     return id;
 }
 
-bool lost(const TestResult& t) { return t.score < t.maxScore - 1e-9; }
-
 // The metrics of one compared image as a table row (Comparison::toJson's fields).
 void metricsTable(std::ostringstream& h, const nlohmann::json& m) {
     h << "<table class=\"metrics\"><tr><th>within tolerance</th><th>NaN/Inf</th><th>stub texels</th>"
@@ -233,7 +231,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
         for (const auto& t : s.tests) {
             if (t.stage != stage || !shown(t.hidden)) continue;
             got += t.score, of += t.maxScore, ++n;
-            if (!lost(t)) ++passed;
+            if (!t.lostPoints()) ++passed;
             else lostOn += (lostOn.empty() ? "" : ", ") + escape(t.scene) + (t.hidden ? " (hidden)" : "");
         }
         if (!n) continue;
@@ -253,7 +251,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
     h << "<h2>Tests</h2>\n<table><tr><th>scene</th><th>stage</th><th>points</th><th>reason</th></tr>\n";
     for (const auto& t : s.tests) {
         if (!shown(t.hidden)) continue;
-        h << "<tr class=\"" << (lost(t) ? "failed" : "passed") << "\"><td><a href=\"#"
+        h << "<tr class=\"" << (t.lostPoints() ? "failed" : "passed") << "\"><td><a href=\"#"
           << anchor(t.scene, t.stage) << "\">" << escape(t.scene) << "</a>"
           << (t.hidden ? " <span class=\"hidden-badge\">hidden</span>" : "") << "</td><td>" << t.stage
           << "</td><td>" << fixed(t.score) << " / " << fixed(t.maxScore) << "</td><td>"

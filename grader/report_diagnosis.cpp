@@ -19,8 +19,6 @@
 namespace sl::grader {
 namespace {
 
-bool lost(const TestResult& t) { return t.score < t.maxScore - 1e-9; }
-
 std::string list(const std::set<std::string>& items) {
     std::string s;
     for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
@@ -102,7 +100,7 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
         if (t.stage == "gaussian") gaussScenes.insert(t.scene);
     }
     for (const auto& t : s.tests) {
-        if (!shown(t.hidden) || !lost(t) || t.stage == "robustness") continue;
+        if (!shown(t.hidden) || !t.lostPoints() || t.stage == "robustness") continue;
         lostScenes.insert(t.scene);
         if (satScenes.count(t.scene)) lostSat.insert(t.scene);
         if (gaussScenes.count(t.scene)) lostGauss.insert(t.scene);
@@ -129,7 +127,7 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
     static const std::set<std::string> biasSets = {"constant-depth", "two-point", "three-point",
                                                    "c3-zero", "quantized-16bit"};
     for (const auto& t : s.tests) {
-        if (t.stage != "robustness" || !lost(t) || !t.metrics.contains("robustness")) continue;
+        if (t.stage != "robustness" || !t.lostPoints() || !t.metrics.contains("robustness")) continue;
         const auto& failing = t.metrics["robustness"].value("failing", nlohmann::json::array());
         std::map<std::string, int> bySet;
         int nan = 0, range = 0, monotone = 0;
@@ -169,10 +167,10 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
     // final fails where the isolated stages pass: the stages' interface.
     std::set<std::string> interfaceScenes;
     for (const auto& t : s.tests) {
-        if (t.stage != "final" || !shown(t.hidden) || !lost(t)) continue;
+        if (t.stage != "final" || !shown(t.hidden) || !t.lostPoints()) continue;
         bool othersPass = true, any = false;
         for (const auto& u : s.tests)
-            if (u.scene == t.scene && u.stage != "final") any = true, othersPass = othersPass && !lost(u);
+            if (u.scene == t.scene && u.stage != "final") any = true, othersPass = othersPass && !u.lostPoints();
         if (any && othersPass) interfaceScenes.insert(t.scene);
     }
     if (!interfaceScenes.empty())

@@ -72,7 +72,7 @@ nlohmann::json resultsJson(const GradeSummary& s, const Rubric& rubric) {
     for (const auto& w : v.hiddenWarnings) staffWarnings += "warning: " + w + "\n";
     nlohmann::json tests = nlohmann::json::array();
     for (const auto& t : s.tests) {
-        const bool passed = t.score >= t.maxScore - 1e-9;
+        const bool passed = !t.lostPoints();
         nlohmann::json j = {{"name", t.scene + ": " + t.stage},
                             {"score", round2(t.score)},
                             {"max_score", round2(t.maxScore)},
@@ -127,7 +127,7 @@ void printScoreTable(std::ostream& out, const GradeSummary& s) {
         if (it == totals.end()) continue;
         std::string lost;
         for (const auto& t : s.tests)
-            if (t.stage == stage && !t.hidden && t.score < t.maxScore - 1e-9) {
+            if (t.stage == stage && !t.hidden && t.lostPoints()) {
                 std::string why = t.output.substr(0, t.output.find('\n'));  // whole, never cut
                 lost += (lost.empty() ? "" : "\n                             ") + t.scene + ": " + why;
             }

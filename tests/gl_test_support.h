@@ -39,6 +39,12 @@ inline std::string readFile(const fs::path& p) {
     return s.str();
 }
 
+// Writes `text` to `p`, replacing the file; its folder is made if missing.
+inline void writeFile(const fs::path& p, const std::string& text) {
+    if (p.has_parent_path()) fs::create_directories(p.parent_path());
+    std::ofstream(p, std::ios::binary) << text;
+}
+
 inline ShaderLibrary library(const std::string& solution) {
     return ShaderLibrary::forSolution(resolveSolution(solution), root());
 }

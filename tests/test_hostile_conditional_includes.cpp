@@ -9,8 +9,6 @@
 namespace sl {
 namespace {
 
-void write(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
 bool has(const AssembledShader& s, const std::string& text) {
     return s.text.find(text) != std::string::npos;
 }
@@ -21,7 +19,7 @@ TEST(HostileConditionalIncludes, LightingIncludesTheSatLookupOnlyForSatScenes) {
     fs::path dir = test::tempDir("cond_lighting");
     for (const auto& name : stageFileNames())
         fs::copy_file(test::root() / "reference" / name, dir / name);
-    write(dir / "sat_lookup.glsl", "this file does not compile; // MARKER\n");
+    test::writeFile(dir / "sat_lookup.glsl", "this file does not compile; // MARKER\n");
     ShaderLibrary lib = ShaderLibrary::forSolution(dir, test::root());
     EXPECT_FALSE(has(lib.assemble("lighting.frag", {"SL_TECHNIQUE_MSM4"}), "MARKER"));
     EXPECT_TRUE(has(lib.assemble("lighting.frag", {"SL_TECHNIQUE_MSM4", "SL_FILTER_SAT"}), "MARKER"));
@@ -30,8 +28,8 @@ TEST(HostileConditionalIncludes, LightingIncludesTheSatLookupOnlyForSatScenes) {
 TEST(HostileConditionalIncludes, ConditionsAreEvaluatedWithTheProgramsDefines) {
     fs::path dir = test::tempDir("cond_eval");
     for (const char* f : {"a", "b", "c", "d", "e", "f"})
-        write(dir / (std::string(f) + ".glsl"), std::string("// FILE_") + f + "\n");
-    write(dir / "main.glsl",
+        test::writeFile(dir / (std::string(f) + ".glsl"), std::string("// FILE_") + f + "\n");
+    test::writeFile(dir / "main.glsl",
           "#define LEVEL 2\n"
           "#if defined(SL_X) && LEVEL > 1\n#include \"a.glsl\"\n"   // SL_X only
           "#elif SL_N == 3\n#include \"b.glsl\"\n"                  // SL_N=3 without SL_X

@@ -13,10 +13,6 @@
 namespace sl {
 namespace {
 
-void write(const fs::path& path, const std::string& text) {
-    std::ofstream(path, std::ios::binary) << text;
-}
-
 // Assembling either works or throws ShaderError with a message; nothing else.
 void assembleSurvives(const ShaderLibrary& lib, const std::string& file,
                       const std::vector<std::string>& defines = {}) {
@@ -45,8 +41,8 @@ TEST(HostileSourceFuzz, RandomAndPathologicalSourcesNeverCrashTheAssembler) {
     std::mt19937 rng(7);
     ShaderLibrary lib({}, {dir}, dir);
     for (int i = 0; i < 300; ++i) {
-        write(dir / "a.glsl", randomText(rng, rng() % 4000));
-        write(dir / "b.glsl", "#include \"a.glsl\"\n" + randomText(rng, rng() % 2000));
+        test::writeFile(dir / "a.glsl", randomText(rng, rng() % 4000));
+        test::writeFile(dir / "b.glsl", "#include \"a.glsl\"\n" + randomText(rng, rng() % 2000));
         assembleSurvives(lib, "b.glsl", {"SL_X", "SL_N=3"});
     }
     const std::vector<std::string> worst = {
@@ -66,8 +62,8 @@ TEST(HostileSourceFuzz, RandomAndPathologicalSourcesNeverCrashTheAssembler) {
         std::string(100000, '\n'),
     };
     for (const auto& text : worst) {
-        write(dir / "w.glsl", text);
-        write(dir / "a.glsl", "float a;\n");
+        test::writeFile(dir / "w.glsl", text);
+        test::writeFile(dir / "a.glsl", "float a;\n");
         assembleSurvives(lib, "w.glsl");
     }
 }
@@ -84,13 +80,13 @@ TEST(HostileSourceFuzz, DeepCyclicAndHugeIncludesAreErrors) {
         return "";
     };
     for (int i = 0; i < 40; ++i)
-        write(dir / ("d" + std::to_string(i) + ".glsl"), "#include \"d" + std::to_string(i + 1) + ".glsl\"\n");
-    write(dir / "d40.glsl", "float deep;\n");
+        test::writeFile(dir / ("d" + std::to_string(i) + ".glsl"), "#include \"d" + std::to_string(i + 1) + ".glsl\"\n");
+    test::writeFile(dir / "d40.glsl", "float deep;\n");
     EXPECT_NE(message("d0.glsl").find("nested more than 32 deep"), std::string::npos) << message("d0.glsl");
-    write(dir / "self.glsl", "#include \"self.glsl\"\n");
+    test::writeFile(dir / "self.glsl", "#include \"self.glsl\"\n");
     EXPECT_NE(message("self.glsl").find("#include cycle"), std::string::npos);
-    write(dir / "huge.glsl", std::string(17u << 20, 'x'));
-    write(dir / "big.glsl", "#include \"huge.glsl\"\n");
+    test::writeFile(dir / "huge.glsl", std::string(17u << 20, 'x'));
+    test::writeFile(dir / "big.glsl", "#include \"huge.glsl\"\n");
     EXPECT_NE(message("big.glsl").find("over 16 MiB"), std::string::npos);
 }
 
@@ -119,7 +115,7 @@ TEST(HostileSourceFuzz, TheWorstFilesAreGradedWithResultsWritten) {
                        {"msm.glsl", "#include \"" + std::string(30000, 'x') + "\n"},
                        {"gaussian_blur.comp", randomText(rng, 30000) + std::string(1, '\0')},
                        {"sat.comp", sat + "// " + std::string(60000, 'c') + "\n"}});
-    write(sub / "deep.glsl", "#include \"deep.glsl\"\n" + randomText(rng, 5000));
+    test::writeFile(sub / "deep.glsl", "#include \"deep.glsl\"\n" + randomText(rng, 5000));
     auto g = test::grade("--scenes contact --no-report --submission " + sub.string(),
                          test::tempDir("fuzz_worst_out"));
     ASSERT_EQ(g.run.exitCode, 0) << g.run.output;

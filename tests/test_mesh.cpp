@@ -29,10 +29,6 @@ fs::path scratchDir() {
     return dir;
 }
 
-void writeFile(const fs::path& path, const std::string& text) {
-    std::ofstream(path) << text;
-}
-
 Object shape(ShapeType type) {
     Object o;
     o.name = toString(type);
@@ -171,7 +167,7 @@ TEST(SceneMesh, RotationAppliesXThenYThenZ) {
 TEST(SceneMesh, ObjWithoutNormalsGetsFlatNormalsAtHardEdges) {
     // A unit cube, counter-clockwise quads, no normals.
     const fs::path obj = scratchDir() / "cube.obj";
-    writeFile(obj, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    test::writeFile(obj, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
                    "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n");
     Object o;
     o.name = "cube";
@@ -188,7 +184,7 @@ TEST(SceneMesh, ObjWithoutNormalsGetsFlatNormalsAtHardEdges) {
 
 TEST(SceneMesh, ObjNormalsFromTheFileAreKept) {
     const fs::path obj = scratchDir() / "tri.obj";
-    writeFile(obj, "v 0 0 0\nv 1 0 0\nv 0 0 -1\nvn 0 2 0\nvn 0.6 0.8 0\nvn 0 1 0\n"
+    test::writeFile(obj, "v 0 0 0\nv 1 0 0\nv 0 0 -1\nvn 0 2 0\nvn 0.6 0.8 0\nvn 0 1 0\n"
                    "f 1//1 2//2 3//3\n");
     Object o;
     o.shape = ShapeType::Mesh;

@@ -7,18 +7,13 @@
 namespace sl {
 namespace {
 
-void write(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path) << text;
-}
-
 // A solution folder with the reference's files, where `file` is replaced by `text`.
 fs::path solutionWith(const std::string& testName, const std::string& file,
                       const std::string& text) {
     fs::path dir = test::tempDir(testName);
     for (const auto& name : stageFileNames())
         fs::copy_file(test::root() / "reference" / name, dir / name);
-    write(dir / file, text);
+    test::writeFile(dir / file, text);
     return dir;
 }
 
@@ -55,8 +50,8 @@ TEST(ShaderSource, ErrorsInsideAnIncludeAndAfterItMapToTheirOwnFiles) {
     fs::path dir = test::tempDir("include_lines");
     for (const auto& name : stageFileNames())
         fs::copy_file(test::root() / "reference" / name, dir / name);
-    write(dir / "helper.glsl", "// helper line 1\nfloat helper() { return 1.0 }\n");  // line 2
-    write(dir / "msm.glsl",
+    test::writeFile(dir / "helper.glsl", "// helper line 1\nfloat helper() { return 1.0 }\n");  // line 2
+    test::writeFile(dir / "msm.glsl",
           "#include \"helper.glsl\"\n"
           "float momentShadowIntensity(vec4 b, float zf) { return helper(); }\n"
           "float broken() { return nope; }\n");  // line 3
@@ -64,7 +59,7 @@ TEST(ShaderSource, ErrorsInsideAnIncludeAndAfterItMapToTheirOwnFiles) {
     std::string err = compileError(lib, "scene.vert", "lighting.frag");
     EXPECT_NE(err.find(lib.displayPath(dir / "helper.glsl") + ":2:"), std::string::npos) << err;
     // The helper error stops Mesa's parser; check the line after an include separately.
-    write(dir / "helper.glsl", "float helper() { return 1.0; }\n");
+    test::writeFile(dir / "helper.glsl", "float helper() { return 1.0; }\n");
     err = compileError(ShaderLibrary::forSolution(dir, test::root()), "scene.vert",
                        "lighting.frag");
     EXPECT_NE(err.find(lib.displayPath(dir / "msm.glsl") + ":3:"), std::string::npos) << err;
@@ -72,10 +67,10 @@ TEST(ShaderSource, ErrorsInsideAnIncludeAndAfterItMapToTheirOwnFiles) {
 
 TEST(ShaderSource, StageFilesComeFromTheirFolderOthersFromSolutionThenShaders) {
     fs::path a = test::tempDir("lookup_a"), b = test::tempDir("lookup_b");
-    write(a / "msm.glsl", "");
-    write(a / "common.glsl", "");
-    write(b / "common.glsl", "");
-    write(b / "only_b.glsl", "");
+    test::writeFile(a / "msm.glsl", "");
+    test::writeFile(a / "common.glsl", "");
+    test::writeFile(b / "common.glsl", "");
+    test::writeFile(b / "only_b.glsl", "");
     ShaderLibrary lib({{"msm.glsl", a}}, {b}, test::root());
     EXPECT_EQ(lib.resolve("msm.glsl"), a / "msm.glsl");
     EXPECT_EQ(lib.resolve("common.glsl"), a / "common.glsl");  // solution first
@@ -84,7 +79,7 @@ TEST(ShaderSource, StageFilesComeFromTheirFolderOthersFromSolutionThenShaders) {
     // student's msm.glsl (b) graded with the reference's other stages (a).
     ShaderLibrary mixed = ShaderLibrary::mixed(a, {{"msm.glsl", b}}, test::root());
     EXPECT_THROW(mixed.resolve("common_a.glsl", b / "msm.glsl"), ShaderError);
-    write(a / "common_a.glsl", "");
+    test::writeFile(a / "common_a.glsl", "");
     EXPECT_EQ(mixed.resolve("common_a.glsl", a / "sat.comp"), a / "common_a.glsl");
     EXPECT_THROW(mixed.resolve("common_a.glsl", b / "msm.glsl"), ShaderError);
     EXPECT_EQ(lib.resolve("only_b.glsl"), b / "only_b.glsl");
@@ -104,8 +99,8 @@ TEST(ShaderSource, MissingStageFileSaysNotSubmitted) {
 
 TEST(ShaderSource, IncludeCycleIsAnError) {
     fs::path dir = test::tempDir("cycle");
-    write(dir / "a.glsl", "#include \"b.glsl\"\n");
-    write(dir / "b.glsl", "#include \"a.glsl\"\n");
+    test::writeFile(dir / "a.glsl", "#include \"b.glsl\"\n");
+    test::writeFile(dir / "b.glsl", "#include \"a.glsl\"\n");
     ShaderLibrary lib({}, {dir}, test::root());
     try {
         lib.assemble("a.glsl", {});
@@ -117,7 +112,7 @@ TEST(ShaderSource, IncludeCycleIsAnError) {
 
 TEST(ShaderSource, VersionLineIsOwnedByTheFrameworkAndLinesAreKept) {
     fs::path dir = test::tempDir("version");
-    write(dir / "x.glsl", "#version 330\nfloat f;\n");
+    test::writeFile(dir / "x.glsl", "#version 330\nfloat f;\n");
     ShaderLibrary lib({}, {dir}, test::root());
     AssembledShader s = lib.assemble("x.glsl", {"SL_A", "SL_B=2"});
     // One source string, no #line: the line table maps assembled line 5 to x.glsl:2.

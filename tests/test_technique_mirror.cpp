@@ -20,15 +20,15 @@ namespace {
 using glm::dvec2;
 using glm::dvec4;
 
-struct Case {
+struct ProbeInput {
     glm::vec4 a, b, c;
 };
 
 // Runs probe function `fn` on every case; returns outputs[i].
-std::vector<glm::vec4> probe(int fn, const std::vector<Case>& cases) {
+std::vector<glm::vec4> probe(int fn, const std::vector<ProbeInput>& cases) {
     test::sharedContext();
     GlProgram p = GlProgram::compute(test::library("reference"), "techniques/probe_technique.comp", {});
-    BufferHandle in = createBuffer(cases.data(), GLsizeiptr(cases.size() * sizeof(Case)));
+    BufferHandle in = createBuffer(cases.data(), GLsizeiptr(cases.size() * sizeof(ProbeInput)));
     BufferHandle out = createBuffer(nullptr, GLsizeiptr(cases.size() * 16));
     gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, out.id());
@@ -136,7 +136,7 @@ dvec4 d4(glm::vec4 v) { return dvec4(v); }
 // Max |gpu − cpu| over the cases, skipping those where `skip` says the CPU value sits on a
 // discontinuity (a step the float and double sides may take differently).
 template <typename Cpu>
-void expectMirror(int fn, const std::vector<Case>& cases, Cpu cpu, double tolerance,
+void expectMirror(int fn, const std::vector<ProbeInput>& cases, Cpu cpu, double tolerance,
                   const char* what) {
     const auto gpu = probe(fn, cases);
     double worst = 0;
@@ -152,20 +152,20 @@ void expectMirror(int fn, const std::vector<Case>& cases, Cpu cpu, double tolera
 }  // namespace
 
 TEST(TechniqueMirror, HardAndSecondDepthCompare) {
-    std::vector<Case> cases;
+    std::vector<ProbeInput> cases;
     for (int i = 0; i < 500; ++i) {
         const float zmap = float(receiver(i)), zf = float(receiver(i + 7)), bias = float(i % 5) * 1e-3f;
         if (std::abs(zf - bias - zmap) < 1e-5f) continue;
         cases.push_back({{zmap, std::min(1.0f, zmap + 0.1f * float(i % 4)), 0, 0}, {zf, bias, 0, 0}, {}});
     }
-    expectMirror(0, cases, [](const Case& c) { return c.b.x - c.b.y > c.a.x ? 1.0 : 0.0; }, 0, "hard");
-    std::erase_if(cases, [](const Case& c) { return std::abs(c.b.x - 0.5f * (c.a.x + c.a.y)) < 1e-5f; });
-    expectMirror(1, cases, [](const Case& c) { return c.b.x > 0.5 * (c.a.x + c.a.y) ? 1.0 : 0.0; }, 0,
+    expectMirror(0, cases, [](const ProbeInput& c) { return c.b.x - c.b.y > c.a.x ? 1.0 : 0.0; }, 0, "hard");
+    std::erase_if(cases, [](const ProbeInput& c) { return std::abs(c.b.x - 0.5f * (c.a.x + c.a.y)) < 1e-5f; });
+    expectMirror(1, cases, [](const ProbeInput& c) { return c.b.x > 0.5 * (c.a.x + c.a.y) ? 1.0 : 0.0; }, 0,
                  "second-depth");
 }
 
 TEST(TechniqueMirror, VsmAndEvsm) {
-    std::vector<Case> vsm, evsm2, evsm4;
+    std::vector<ProbeInput> vsm, evsm2, evsm4;
     const auto ds = distributions(600);
     for (size_t i = 0; i < ds.size(); ++i) {
         const double zf = receiver(int(i));
@@ -180,17 +180,17 @@ TEST(TechniqueMirror, VsmAndEvsm) {
         evsm2.push_back({m, {float(zf), float(cp), float(1e-4), float(bleed)}, {}});
         evsm4.push_back({m, {float(zf), float(cp), float(cn), 0}, {1e-4f, float(bleed), 0, 0}});
     }
-    expectMirror(2, vsm, [](const Case& c) {
+    expectMirror(2, vsm, [](const ProbeInput& c) {
         return 1 - reduce(chebyshev(dvec2(c.a), c.b.x, c.b.y), c.b.z);
     }, 2e-3, "vsm");
     auto evsmLit = [](dvec2 m, double zf, double c, double minVar) {
         const double w = std::exp(c * (2 * zf - 1));
         return chebyshev(m, w, minVar * (c * w) * (c * w));
     };
-    expectMirror(3, evsm2, [&](const Case& c) {
+    expectMirror(3, evsm2, [&](const ProbeInput& c) {
         return 1 - reduce(evsmLit(dvec2(c.a), c.b.x, c.b.y, c.b.z), c.b.w);
     }, 2e-3, "evsm2");
-    expectMirror(4, evsm4, [&](const Case& c) {
+    expectMirror(4, evsm4, [&](const ProbeInput& c) {
         const double pPos = evsmLit(dvec2(c.a), c.b.x, c.b.y, c.c.x);
         const double wn = -std::exp(-double(c.b.z) * (2 * c.b.x - 1)), s = c.b.z * wn;
         const double pNeg = chebyshev(dvec2(c.a.z, c.a.w), wn, c.c.x * s * s);
@@ -199,7 +199,7 @@ TEST(TechniqueMirror, VsmAndEvsm) {
 }
 
 TEST(TechniqueMirror, ConvolutionShadowMaps) {
-    std::vector<Case> cases;
+    std::vector<ProbeInput> cases;
     const auto ds = distributions(400);
     const int M = 4;  // the probe's SL_PARAM_terms default
     for (size_t i = 0; i < ds.size(); ++i) {
@@ -211,7 +211,7 @@ TEST(TechniqueMirror, ConvolutionShadowMaps) {
         }
         cases.push_back({l[0], {float(receiver(int(i))), float(i % 2), 0.02f, 2.0f}, l[1]});
     }
-    expectMirror(5, cases, [&](const Case& cs) {
+    expectMirror(5, cases, [&](const ProbeInput& cs) {
         const glm::vec4 l[2] = {cs.a, cs.c};
         const double d = cs.b.x - cs.b.z;
         double v = 0.5;
@@ -225,7 +225,7 @@ TEST(TechniqueMirror, ConvolutionShadowMaps) {
 }
 
 TEST(TechniqueMirror, MomentVariants) {
-    std::vector<Case> plain, quantised;
+    std::vector<ProbeInput> plain, quantised;
     const auto ds = distributions(600);
     const double alpha = 1e-3;  // conditions B well enough for float to track double
     for (size_t i = 0; i < ds.size(); ++i) {
@@ -234,11 +234,11 @@ TEST(TechniqueMirror, MomentVariants) {
         plain.push_back({f4(b), {zf, float(alpha), 0, 0}, {}});
         quantised.push_back({f4(quantizeMoments16(b)), {zf, float(alpha), 0, 0}, {}});
     }
-    expectMirror(10, plain, [&](const Case& c) { return hamburger(d4(c.a), c.b.x, c.b.y, dvec4(0.5)); },
+    expectMirror(10, plain, [&](const ProbeInput& c) { return hamburger(d4(c.a), c.b.x, c.b.y, dvec4(0.5)); },
                  5e-3, "hamburger");
-    expectMirror(6, plain, [&](const Case& c) { return hausdorff(d4(c.a), c.b.x, c.b.y); }, 5e-3,
+    expectMirror(6, plain, [&](const ProbeInput& c) { return hausdorff(d4(c.a), c.b.x, c.b.y); }, 5e-3,
                  "msm4-hausdorff");
-    expectMirror(7, quantised, [&](const Case& c) {
+    expectMirror(7, quantised, [&](const ProbeInput& c) {
         return hamburger(dequantizeMoments16(d4(c.a)), c.b.x, c.b.y, dvec4(0.5, 1.0 / 3, 0.25, 0.2));
     }, 5e-3, "msm4-16bit");
     // Blockers: fraction and mean depth.
