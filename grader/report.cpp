@@ -9,6 +9,7 @@
 #include "report.h"
 
 #include "image_io.h"
+#include "results.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,13 +73,6 @@ std::string escape(const std::string& s) {
     return o;
 }
 
-std::string fixed(double v, int digits = 2) {
-    std::ostringstream o;
-    o.setf(std::ios::fixed);
-    o.precision(digits);
-    o << v;
-    return o.str();
-}
 
 std::string number(const nlohmann::json& j, int digits = 4) {
     if (!j.is_number()) return j.is_null() ? "NaN" : escape(j.dump());
@@ -100,7 +94,7 @@ void metricsTable(std::ostringstream& h, const nlohmann::json& m) {
     h << "<table class=\"metrics\"><tr><th>within tolerance</th><th>NaN/Inf</th><th>stub texels</th>"
          "<th>worst texel (x, y from bottom-left, channel): value, expected, &times; tolerance</th>"
          "<th>OIIO mean</th><th>RMS</th><th>max</th><th>PSNR</th></tr><tr><td>"
-      << fixed(100.0 * m.value("fraction_within_tolerance", 0.0)) << "%</td><td>"
+      << fixedDigits(100.0 * m.value("fraction_within_tolerance", 0.0)) << "%</td><td>"
       << m.value("non_finite", 0L) << "</td><td>" << m.value("stub_texels", 0L) << "</td><td>";
     if (m.contains("worst_texel")) {
         const auto& w = m["worst_texel"];
@@ -209,7 +203,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
       << ".metrics{font-size:13px}.hidden-badge{background:#333;color:#fff;padding:1px 6px;border-radius:3px;font-size:12px}"
       << ".imgs{display:flex;gap:12px;flex-wrap:wrap}.imgs figure{margin:0}"
       << ".imgs img{width:256px;image-rendering:pixelated;border:1px solid #999;background:#000}"
-      << "</style></head><body>\n<h1>Shadowlab grade: " << fixed(score) << " / " << fixed(max) << "</h1>\n";
+      << "</style></head><body>\n<h1>Shadowlab grade: " << fixedDigits(score) << " / " << fixedDigits(max) << "</h1>\n";
     if (staff)
         h << "<p><b>Staff report:</b> every test, hidden scenes marked <span class=\"hidden-badge\">hidden"
              "</span>. Do not forward it; <code>report/</code> is the one students may see.</p>\n";
@@ -236,7 +230,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
         }
         if (!n) continue;
         h << "<tr class=\"" << (passed == n ? "passed" : "failed") << "\"><td>" << stage << "</td><td>"
-          << fixed(got) << " / " << fixed(of) << "</td><td>" << passed << " of " << n << "</td><td>"
+          << fixedDigits(got) << " / " << fixedDigits(of) << "</td><td>" << passed << " of " << n << "</td><td>"
           << (lostOn.empty() ? "full marks" : lostOn) << "</td></tr>\n";
     }
     h << "</table>\n";
@@ -254,7 +248,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
         h << "<tr class=\"" << (t.lostPoints() ? "failed" : "passed") << "\"><td><a href=\"#"
           << anchor(t.scene, t.stage) << "\">" << escape(t.scene) << "</a>"
           << (t.hidden ? " <span class=\"hidden-badge\">hidden</span>" : "") << "</td><td>" << t.stage
-          << "</td><td>" << fixed(t.score) << " / " << fixed(t.maxScore) << "</td><td>"
+          << "</td><td>" << fixedDigits(t.score) << " / " << fixedDigits(t.maxScore) << "</td><td>"
           << escape(t.output.substr(0, t.output.find('\n'))) << "</td></tr>\n";
     }
     h << "</table>\n";

@@ -16,6 +16,14 @@
 #include <sstream>
 
 namespace sl::grader {
+
+std::string fixedDigits(double v, int digits) {
+    std::ostringstream o;
+    o.setf(std::ios::fixed);
+    o.precision(digits);
+    o << v;
+    return o.str();
+}
 namespace {
 
 double round2(double v) { return std::round(v * 100.0) / 100.0; }

@@ -1,0 +1,216 @@
+// score_render: one finished stage render turned into its test (score_render.h).
+#include "score_render.h"
+
+#include "depth_ladder.h"
+#include "image_io.h"
+#include "metrics.h"
+#include "points.h"
+#include "raw_image.h"
+#include "results.h"
+#include "scene.h"
+#include "shader_source.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace sl::grader {
+namespace fs = std::filesystem;
+namespace {
+
+// Where the worst texel is and what it holds, so that a student can reproduce it (probe).
+std::string worstTexelText(const std::string& image, const Comparison& c) {
+    std::ostringstream o;
+    o.precision(7);
+    if (image == kDepthLadderImage) {
+        const glm::vec3 in = relativeDepthLadder().at(size_t(c.worstX));
+        o << "  worst: ladder row " << c.worstX << " (lightDepth " << in.x << ", near " << in.y
+          << ", far " << in.z << "): b" << c.worstChannel + 1 << " = " << c.worstValue
+          << ", expected " << c.worstExpected
+          << " (shadowlab probe moments --generate depth-ladder writes these rows)";
+        return o.str();
+    }
+    o << "  worst texel: x " << c.worstX << ", y " << c.worstY
+      << " (from the bottom-left; its centre is (" << c.worstX + 0.5 << ", " << c.worstY + 0.5
+      << ")), channel b" << c.worstChannel + 1 << ": " << c.worstValue << ", expected "
+      << c.worstExpected << " (" << fixedDigits(std::min(c.worst, 1e6), 1) << "x the tolerance)";
+    return o.str();
+}
+
+// The stage's comparison under the rubric's tolerances: moments and filtered moments per
+// channel (the SAT with an allowance for its table's rounding), msm's G and final's colour.
+Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Image& mine, const Image& ref) {
+    if (job.stage == "msm") return compareImages(mine, ref, rubric.shadowTol);
+    if (job.stage == "final") return compareImages(mine, ref, rubric.finalTol);
+    std::vector<double> extra;
+    if (job.stage == "sat" && rubric.satRounding > 0) {
+        // A float32 table's rounding grows with its entries (up to the sum of the whole
+        // map), and a correct table summed in another order rounds differently: allow
+        // satRounding ulps of the total, spread over the box.
+        Scene scene = loadScene(job.scene->path.string());
+        const double area = double(scene.shadow.satKernelTexels) * scene.shadow.satKernelTexels;
+        extra.assign(ref.channels, 0.0);
+        for (size_t i = 0; i < ref.pixels.size(); ++i)
+            extra[i % ref.channels] += std::fabs(ref.pixels[i]);
+        for (double& e : extra) e = rubric.satRounding * std::ldexp(e, -24) / area;
+    }
+    if (job.stage == "moments")
+        return compareMoments(mine, ref, rubric.momentsAbs, rubric.momentsRel);
+    return compareMoments(mine, ref, rubric.filterAbs, rubric.filterRel, extra);
+}
+
+// The hard-case catalogue: the fraction of cases with no NaN, Inf, out-of-range,
+// non-monotone or off-bound G (docs/numerics.md), and the failing cases with their inputs.
+TestResult scoreRobustness(TestResult t, const nlohmann::json& worker, const Rubric& rubric) {
+    t.scene = "hard cases";
+    t.hidden = false;
+    const auto& r = worker["robustness"];
+    const double fraction = r.value("score", 0.0);
+    const auto notes = worker.value("stubNotes", std::vector<std::string>{});
+    t.fraction = notes.empty() ? rubric.points("robustness", fraction, 1.0) : 0.0;
+    t.metrics["robustness"] = r;
+    const auto [pass, zero] = rubric.ramp("robustness");
+    std::string head = !notes.empty() ? "not implemented: " + notes.front() + "\n"
+                       : t.fraction >= 1.0 ? std::string("full marks\n")
+                       : fixedDigits(100.0 * fraction, 2) + "% of the hard cases pass (full marks from " +
+                             fixedDigits(100.0 * pass, 1) + "%, none at " + fixedDigits(100.0 * zero, 1) + "%)\n";
+    t.output = head + r.value("summary", std::string());
+    return t;
+}
+
+}  // namespace
+
+// What the child's failure means for the student.
+std::string failureText(const ChildResult& c, const GradeOptions& o) {
+    switch (c.kind) {
+        case ChildResult::TimedOut:
+            return "timed out after " + fixedDigits(c.limitSeconds, 0) + " s" + c.limitNote +
+                   ": the render was stopped (look for a loop that never ends)" +
+                   (!c.skipped ? ""
+                    : c.skippedAfter.empty() ? "; not run here: this stage timed out on another scene"
+                    : "; not run here: the " + c.skippedAfter +
+                          " stage timed out, and this render runs its files too");
+        case ChildResult::Signalled: return "crashed: " + signalName(c.signal);
+        case ChildResult::StartFailed: return "the grader could not start its worker";
+        case ChildResult::Exited: break;
+    }
+    std::string log = c.log;
+    if (c.exitCode == 3) {  // ShaderError: file:line lines, then the driver's log
+        const std::string head = "shader error:\n";
+        if (auto p = log.find(head); p != std::string::npos) log = log.substr(p + head.size());
+        if (log.size() > 4000) log = log.substr(0, 4000) + "\n...";
+        return "compile or link error:\n" + log;
+    }
+    if (log.size() > 2000) log = "..." + log.substr(log.size() - 2000);
+    std::string text = "render failed (exit " + std::to_string(c.exitCode) + "): " + log;
+    if (log.find("alloc") != std::string::npos || log.find("memory") != std::string::npos ||
+        log.find("map") != std::string::npos)
+        text += "\n(the memory limit is " + std::to_string(o.memoryMb) + " MB)";
+    return text;
+}
+
+TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, const Rubric& rubric,
+                       const std::function<fs::path(const std::string& image)>& referenceFile,
+                       ReportWriter* report) {
+    const bool robustness = job.stage == "robustness";
+    TestResult t;
+    t.scene = robustness ? "hard cases" : job.scene->name;  // one name, pass or fail
+    t.stage = job.stage;
+    t.hidden = !robustness && job.scene->hidden;
+    if (!job.missing.empty()) {
+        t.output = job.missing;
+        return t;
+    }
+    if (job.child.notRun) {
+        t.output = "not implemented: " + job.notRunReason;
+        return t;
+    }
+    if (!(job.child.kind == ChildResult::Exited && job.child.exitCode == 0)) {
+        t.output = failureText(job.child, options);
+        return t;
+    }
+    nlohmann::json worker;
+    try {
+        std::ifstream in(job.out / "worker.json");
+        worker = nlohmann::json::parse(in);
+    } catch (const std::exception&) {
+        t.output = "the render left no result";
+        return t;
+    }
+    if (robustness) return scoreRobustness(t, worker, rubric);
+    // Stub notes naming the submission's files of this stage: not implemented.
+    std::string notes;
+    for (const auto& n : worker.value("stubNotes", std::vector<std::string>{}))
+        for (const auto& f : stageFiles(job.stage, job.scene->filter))
+            if (n.find("submission/" + f) != std::string::npos) notes += n + "\n";
+
+    const std::string prefix = stageImage(job.stage);
+    std::vector<std::string> images;
+    for (const auto& name : worker.value("images", std::vector<std::string>{}))
+        if (name.rfind(prefix, 0) == 0 && (prefix != "moments_filtered" || name == prefix))
+            images.push_back(name);
+    if (images.empty()) images.push_back(prefix);
+    double fraction = 1.0, worstCap = 1.0;
+    std::ostringstream detail;
+    for (const auto& name : images) {
+        Image ref, mine;
+        const bool ladder = name == kDepthLadderImage;
+        try {
+            // msm is compared with the reference lit from the same moments (msm_<image>);
+            // the relativeDepth ladder with its exact moments.
+            ref = ladder ? depthLadderExpected()
+                         : readAnyImage(referenceFile(job.stage == "msm" ? "msm_" + name : name));
+        } catch (const std::exception& e) {
+            t.output = "no reference image " + name + " to compare with (" + e.what() + ")";
+            return t;
+        }
+        try {
+            mine = readRaw(job.out / (name + ".raw"));
+        } catch (const std::exception&) {
+            fraction = 0.0;
+            detail << name << ": no image was produced\n";
+            continue;
+        }
+        if (ladder && depthLadderStub(mine)) {
+            notes += "submission/moments.glsl: relativeDepth: not implemented yet (it returns "
+                     "the stub value -1)\n";
+            continue;
+        }
+        Comparison c = compareStage(job, rubric, mine, ref);
+        fraction = std::min(fraction, c.error.empty() ? c.fraction : 0.0);
+        if (auto cap = rubric.worstTexelCap.find(job.stage);
+            cap != rubric.worstTexelCap.end() && c.worst > rubric.worstTexelFactor)
+            worstCap = std::min(worstCap, cap->second);
+        t.metrics[name] = c.toJson();
+        t.images.push_back(name);
+        detail << name << ": " << fixedDigits(100.0 * c.fraction, 2) << "% within tolerance"
+               << "; OIIO mean " << fixedDigits(c.mean, 6) << ", RMS " << fixedDigits(c.rms, 6) << ", max "
+               << fixedDigits(c.max, 6) << ", PSNR " << fixedDigits(c.psnr, 1) << " dB";
+        if (!c.error.empty()) detail << "; " << c.error;
+        if (c.worstX >= 0) detail << "; worst texel at " << fixedDigits(std::min(c.worst, 1e6), 4) << "x the tolerance";
+        if (c.nonFinite) detail << "; " << c.nonFinite << " NaN/Inf values (counted wrong)";
+        if (c.stubTexels) detail << "; " << c.stubTexels << " texels hold the stub value -1";
+        detail << "\n";
+        if (c.worstX >= 0 && c.worst > 1.0) detail << worstTexelText(name, c) << "\n";
+        if (report) report->add(t, name, ref, mine, c);
+    }
+    t.fraction = notes.empty() ? std::min(rubric.points(job.stage, fraction, 1.0), worstCap) : 0.0;
+    const auto [pass, zero] = rubric.ramp(job.stage);
+    std::string head;
+    if (!notes.empty()) head = "not implemented: " + notes;
+    else if (t.fraction >= 1.0) head = "full marks\n";
+    else if (worstCap < 1.0 && t.fraction == worstCap)
+        head = "worst-texel rule: a texel is off by more than " + fixedDigits(rubric.worstTexelFactor, 0) +
+               "x the tolerance (look at the borders and edges), at most " +
+               fixedDigits(100.0 * worstCap, 0) + "% of the points; " + fixedDigits(100.0 * fraction, 3) +
+               "% of the texels within tolerance\n";
+    else head = fixedDigits(100.0 * fraction, 2) + "% within tolerance (full marks from " +
+                fixedDigits(100.0 * pass, 1) + "%, none at " + fixedDigits(100.0 * zero, 1) + "%)\n";
+    if (notes.empty() && fraction == 0.0 && detail.str().find("stub value") != std::string::npos)
+        head = "not implemented (the output is the stub value -1)\n";
+    t.output = head + detail.str();
+    return t;
+}
+
+}  // namespace sl::grader
