@@ -30,13 +30,13 @@ TEST(HostileConditionalIncludes, ConditionsAreEvaluatedWithTheProgramsDefines) {
     for (const char* f : {"a", "b", "c", "d", "e", "f"})
         test::writeFile(dir / (std::string(f) + ".glsl"), std::string("// FILE_") + f + "\n");
     test::writeFile(dir / "main.glsl",
-          "#define LEVEL 2\n"
-          "#if defined(SL_X) && LEVEL > 1\n#include \"a.glsl\"\n"   // SL_X only
-          "#elif SL_N == 3\n#include \"b.glsl\"\n"                  // SL_N=3 without SL_X
-          "#else\n#include \"c.glsl\"\n#endif\n"
-          "#ifndef SL_X\n  #  include \"d.glsl\" // a comment\n#endif\n"
-          "/*\n#include \"e.glsl\"\n*/\n"                           // in a comment: never
-          "#if SOME_MACRO(1)\n#include \"f.glsl\"\n#endif\n");      // unknown: expanded
+                    "#define LEVEL 2\n"
+                    "#if defined(SL_X) && LEVEL > 1\n#include \"a.glsl\"\n"   // SL_X only
+                    "#elif SL_N == 3\n#include \"b.glsl\"\n"                  // SL_N=3 without SL_X
+                    "#else\n#include \"c.glsl\"\n#endif\n"
+                    "#ifndef SL_X\n  #  include \"d.glsl\" // a comment\n#endif\n"
+                    "/*\n#include \"e.glsl\"\n*/\n"                           // in a comment: never
+                    "#if SOME_MACRO(1)\n#include \"f.glsl\"\n#endif\n");      // unknown: expanded
     ShaderLibrary lib({}, {dir}, dir);
     auto x = lib.assemble("main.glsl", {"SL_X"});
     EXPECT_TRUE(has(x, "FILE_a"));

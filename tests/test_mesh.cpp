@@ -168,7 +168,7 @@ TEST(SceneMesh, ObjWithoutNormalsGetsFlatNormalsAtHardEdges) {
     // A unit cube, counter-clockwise quads, no normals.
     const fs::path obj = scratchDir() / "cube.obj";
     test::writeFile(obj, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                   "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n");
+                         "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 4 8 7 3\nf 1 5 8 4\nf 2 3 7 6\n");
     Object o;
     o.name = "cube";
     o.shape = ShapeType::Mesh;
@@ -185,7 +185,7 @@ TEST(SceneMesh, ObjWithoutNormalsGetsFlatNormalsAtHardEdges) {
 TEST(SceneMesh, ObjNormalsFromTheFileAreKept) {
     const fs::path obj = scratchDir() / "tri.obj";
     test::writeFile(obj, "v 0 0 0\nv 1 0 0\nv 0 0 -1\nvn 0 2 0\nvn 0.6 0.8 0\nvn 0 1 0\n"
-                   "f 1//1 2//2 3//3\n");
+                         "f 1//1 2//2 3//3\n");
     Object o;
     o.shape = ShapeType::Mesh;
     o.meshPath = obj.string();

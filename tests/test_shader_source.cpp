@@ -52,9 +52,9 @@ TEST(ShaderSource, ErrorsInsideAnIncludeAndAfterItMapToTheirOwnFiles) {
         fs::copy_file(test::root() / "reference" / name, dir / name);
     test::writeFile(dir / "helper.glsl", "// helper line 1\nfloat helper() { return 1.0 }\n");  // line 2
     test::writeFile(dir / "msm.glsl",
-          "#include \"helper.glsl\"\n"
-          "float momentShadowIntensity(vec4 b, float zf) { return helper(); }\n"
-          "float broken() { return nope; }\n");  // line 3
+                    "#include \"helper.glsl\"\n"
+                    "float momentShadowIntensity(vec4 b, float zf) { return helper(); }\n"
+                    "float broken() { return nope; }\n");  // line 3
     ShaderLibrary lib = ShaderLibrary::forSolution(dir, test::root());
     std::string err = compileError(lib, "scene.vert", "lighting.frag");
     EXPECT_NE(err.find(lib.displayPath(dir / "helper.glsl") + ":2:"), std::string::npos) << err;
