@@ -279,8 +279,6 @@ private:
         return true;
     }
 
-    // The test's scene as results.json names it.
-    std::string testScene(const Job& j) const { return j.stage == "robustness" ? "hard cases" : scenes_[j.scene].name; }
 
     std::map<std::string, size_t> scouts_;      // stage -> the job that speaks for it
     std::map<size_t, std::string> scoutNote_;   // finished scout -> its stub note, "" if none
@@ -358,14 +356,15 @@ private:
         std::exception_ptr failed;
         auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs,
                                    [&](size_t i, const ChildResult& r) {
-                                       jobs_[index[i]].child = r;
-                                       jobs_[index[i]].ran = true;
+                                       Job& j = jobs_[index[i]];
+                                       j.child = r;
+                                       j.ran = true;
                                        if (timing_)
-                                           std::cerr << "grade: " << jobs_[index[i]].stage << " "
-                                                     << testScene(jobs_[index[i]]) << ": "
+                                           std::cerr << "grade: " << j.stage << " "
+                                                     << testScene(j.stage, scenes_[j.scene]) << ": "
                                                      << (r.notRun ? "not run (a stub)" : std::to_string(r.seconds) + " s")
                                                      << "\n";
-                                       if (jobs_[index[i]].stage == "reference" || failed) return;
+                                       if (j.stage == "reference" || failed) return;
                                        try {
                                            scoreReady();
                                        } catch (...) {
@@ -398,7 +397,7 @@ private:
     // The test of a finished render (score_render.h); `fraction` holds its share of the
     // points (assignPoints scales it).
     TestResult score(const Job& job, ReportWriter* report) {
-        const RenderToScore render{job.stage, &scenes_[job.scene], job.out, job.missing, job.child,
+        const RenderToScore render{job.stage, scenes_[job.scene], job.out, job.missing, job.child,
                                    job.notRunReason};
         return scoreRender(render, o_, rubric_,
                            [&](const std::string& image) { return referenceFile(job.scene, image); }, report);

@@ -4,7 +4,6 @@
 #include "depth_ladder.h"
 #include "image_io.h"
 #include "metrics.h"
-#include "points.h"
 #include "raw_image.h"
 #include "results.h"
 #include "scene.h"
@@ -48,7 +47,7 @@ Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Im
         // A float32 table's rounding grows with its entries (up to the sum of the whole
         // map), and a correct table summed in another order rounds differently: allow
         // satRounding ulps of the total, spread over the box.
-        Scene scene = loadScene(job.scene->path.string());
+        Scene scene = loadScene(job.scene.path.string());
         const double area = double(scene.shadow.satKernelTexels) * scene.shadow.satKernelTexels;
         extra.assign(ref.channels, 0.0);
         for (size_t i = 0; i < ref.pixels.size(); ++i)
@@ -63,8 +62,6 @@ Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Im
 // The hard-case catalogue: the fraction of cases with no NaN, Inf, out-of-range,
 // non-monotone or off-bound G (docs/numerics.md), and the failing cases with their inputs.
 TestResult scoreRobustness(TestResult t, const nlohmann::json& worker, const Rubric& rubric) {
-    t.scene = "hard cases";
-    t.hidden = false;
     const auto& r = worker["robustness"];
     const double fraction = r.value("score", 0.0);
     const auto notes = worker.value("stubNotes", std::vector<std::string>{});
@@ -80,6 +77,10 @@ TestResult scoreRobustness(TestResult t, const nlohmann::json& worker, const Rub
 }
 
 }  // namespace
+
+std::string testScene(const std::string& stage, const GradedScene& scene) {
+    return stage == "robustness" ? "hard cases" : scene.name;
+}
 
 // What the child's failure means for the student.
 std::string failureText(const ChildResult& c, const GradeOptions& o) {
@@ -115,9 +116,9 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
                        ReportWriter* report) {
     const bool robustness = job.stage == "robustness";
     TestResult t;
-    t.scene = robustness ? "hard cases" : job.scene->name;  // one name, pass or fail
+    t.scene = testScene(job.stage, job.scene);  // one name, pass or fail
     t.stage = job.stage;
-    t.hidden = !robustness && job.scene->hidden;
+    t.hidden = !robustness && job.scene.hidden;
     if (!job.missing.empty()) {
         t.output = job.missing;
         return t;
@@ -142,7 +143,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
     // Stub notes naming the submission's files of this stage: not implemented.
     std::string notes;
     for (const auto& n : worker.value("stubNotes", std::vector<std::string>{}))
-        for (const auto& f : stageFiles(job.stage, job.scene->filter))
+        for (const auto& f : stageFiles(job.stage, job.scene.filter))
             if (n.find("submission/" + f) != std::string::npos) notes += n + "\n";
 
     const std::string prefix = stageImage(job.stage);

@@ -1,5 +1,5 @@
 // The command line: outputs and sidecar of `render`, and clear errors for bad input.
-#include "kit_test_support.h"
+#include "gl_test_support.h"
 
 #include <nlohmann/json.hpp>
 
