@@ -17,7 +17,9 @@
 #include "renderer.h"
 #include "scene.h"
 #include "scene_list.h"
+#include "scene_size.h"
 #include "probe_check.h"
+#include "technique.h"
 
 #include <unistd.h>
 
@@ -64,8 +66,24 @@ std::string joined(const std::vector<std::string>& items, const char* sep) {
 
 // Renders one scene, checks its probes, and encodes its goldens into `dir` (an empty folder).
 // Returns the scene's manifest entry.
+// The ladder's rows whose own files solve a stage (TechniqueRow::solvesStage) are left out of
+// the student kit; their final images at the demo's sheet width stand in for them on its
+// comparison sheets (`compare`), as dir/ladder/<technique>.png.
+void renderLadderStandIns(const Scene& full, Renderer& renderer, const fs::path& dir) {
+    for (const TechniqueRow& row : techniqueTable()) {
+        if (row.solvesStage.empty()) continue;
+        Scene scene = full;
+        scaleScene(scene, kSheetImageWidth);
+        overrideTechnique(scene.shadow, row.id);
+        const RenderResult result = renderer.render(scene, planPasses(scene));
+        fs::create_directories(dir / "ladder");
+        writePngPreview(result.images.at("final"), dir / "ladder" / (row.name + ".png"), true);
+    }
+}
+
 nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, const fs::path& dir,
-                           const ContextInfo& info, std::vector<std::string>& probeErrors) {
+                           const ContextInfo& info, std::vector<std::string>& probeErrors,
+                           bool standIns) {
     Scene scene = loadScene(gs.path.string());
     Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
     RenderResult result = renderer.render(scene, planPasses(scene));
@@ -103,6 +121,7 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
                             {"mesa_version", info.mesaVersion},
                             {"renderer", info.renderer}};
     if (gs.hidden) entry["scene_file"] = fs::absolute(gs.path).lexically_normal().string();
+    else if (standIns) renderLadderStandIns(scene, renderer, dir);
     std::cerr << "golden: " << name << " (" << images.size() << " images)\n";
     return entry;
 }
@@ -148,7 +167,8 @@ GoldenRun runGoldens(const GoldenOptions& o) {
     std::vector<std::string> probeErrors;
     for (const GradedScene& gs : scenes) {
         const fs::path folder = goldenFolder(gs, o.out);
-        nlohmann::json entry = renderScene(gs, solution, staging / gs.name, info, probeErrors);
+        nlohmann::json entry =
+            renderScene(gs, solution, staging / gs.name, info, probeErrors, !o.check);
         if (!entry.is_null()) byFolder[folder].push_back({gs, entry});
     }
     if (!probeErrors.empty()) {

@@ -1,24 +1,28 @@
 // lighting.frag: shades the camera's view. Each light adds (1 - G)·(diffuse + specular) to
-// the ambient term, where G is the shadow intensity of the technique compiled in:
-//   SL_TECHNIQUE_MSM4  Hamburger 4MSM from filtered moments (student: msm.glsl)
-//   SL_FILTER_SAT      the moments come from a summed-area table (student: sat_lookup.glsl)
-//   SL_TECHNIQUE_<X>   any other row of the technique table (framework/render/technique.cpp):
-//                      shaders/techniques/<x>.glsl defines shadowIntensity<X>(ShadowQuery)
-// Every technique is a permutation of this one file, not a copy of it.
-#ifdef SL_TECHNIQUE_MSM4
+// the ambient term, where G is the shadow intensity of the technique compiled in
+// (SL_TECHNIQUE_<X>, a row of framework/render/technique.cpp): shaders/techniques/<x>.glsl
+// defines shadowIntensity<X>(ShadowQuery). Every technique is a permutation of this one file,
+// and every one runs on the solution's stage files: relativeDepth (moments.glsl), the SAT's
+// satBoxAverage (sat_lookup.glsl, SL_FILTER_SAT) and, where it reconstructs with Hamburger 4MSM,
+// momentShadowIntensity (msm.glsl, SL_STAGE_MSM).
 #include "moments.glsl"  // relativeDepth
-
-uniform float uMomentBias;  // α, handed to msm.glsl
-#include "msm.glsl"
 #ifdef SL_FILTER_SAT
 #include "sat_lookup.glsl"
 #endif
-#else
+#ifdef SL_STAGE_MSM
+uniform float uMomentBias;  // α, handed to msm.glsl
+#include "msm.glsl"
+#endif
 #include "techniques/common.glsl"
 // Helpers shared by several techniques come first: a file is included once per program,
 // even inside a branch the preprocessor drops, so a nested include would come too late.
 #include "techniques/evsm_common.glsl"
-#include "techniques/msm_hamburger.glsl"
+#if defined(SL_TECHNIQUE_MSM4_HAUSDORFF) || defined(SL_TECHNIQUE_MSM_SOFT)
+#include "techniques/msm_hamburger.glsl"  // instructor kit only (it solves the msm stage)
+#endif
+#ifdef SL_TECHNIQUE_MSM4
+#include "techniques/msm4.glsl"
+#endif
 #ifdef SL_TECHNIQUE_HARD
 #include "techniques/hard.glsl"
 #endif
@@ -51,7 +55,6 @@ uniform float uMomentBias;  // α, handed to msm.glsl
 #endif
 #ifdef SL_TECHNIQUE_MSM_SOFT
 #include "techniques/msm_soft.glsl"
-#endif
 #endif
 
 #define SL_MAX_LIGHTS 4
@@ -92,14 +95,9 @@ uniform vec4 uLightCascadeFar[SL_MAX_LIGHTS];
 uniform vec3 uCascadeCameraPosition;
 uniform vec3 uCascadeCameraForward;
 uniform float uDepthBias;   // subtracted from the fragment's relative depth (acne)
-#ifdef SL_TECHNIQUE_MSM4
-uniform sampler2D uShadowMaps[SL_MAX_LIGHTS * SL_MAX_CASCADES];  // filtered moments, or their SAT
-uniform float uSatKernel;   // box size in texels (SL_FILTER_SAT)
-#else
 uniform float uLightSize[SL_MAX_LIGHTS];          // emitter diameter (PCSS, msm-soft)
 uniform float uSlotFrustumScale[SL_MAX_LIGHTS * SL_MAX_CASCADES];  // frustum width: spot × depth
 uniform float uNormalOffset = 0.0;                // texels along the normal (hard, pcf, pcss)
-#endif
 
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out float outShadow;  // G of the first shadowing light
@@ -121,24 +119,6 @@ int shadowSlot(int i, vec3 p) {
     return -1;
 }
 
-#ifdef SL_TECHNIQUE_MSM4
-// G for light i at world position p from the map in `slot`, unit `map`; 0 outside its frustum.
-float shadowIntensityAt(int i, int slot, int map, vec3 p) {
-    vec4 clip = uSlotViewProjection[slot] * vec4(p, 1.0);
-    vec3 ndc = clip.xyz / clip.w;
-    if (clip.w <= 0.0 || any(greaterThan(abs(ndc.xy), vec2(1.0)))) return 0.0;
-    vec2 uv = ndc.xy * 0.5 + 0.5;
-    float lightDepth = dot(p - uLightEye[i], uLightForward[i]);
-    float zf = relativeDepth(lightDepth, uLightDepthRange[i]) - uDepthBias;
-#ifdef SL_FILTER_SAT
-    vec2 size = vec2(textureSize(uShadowMaps[map], 0));
-    vec4 b = satBoxAverage(uShadowMaps[map], uv * size, vec2(uSatKernel));
-#else
-    vec4 b = texture(uShadowMaps[map], uv);  // bilinear: filtering moments is linear
-#endif
-    return momentShadowIntensity(b, zf);
-}
-#else
 // G for light i at world position p from the technique's row and the maps in `slot`, from
 // unit `map` on; 0 outside its frustum.
 float shadowIntensityAt(int i, int slot, int map, vec3 p) {
@@ -157,16 +137,20 @@ float shadowIntensityAt(int i, int slot, int map, vec3 p) {
     q.uv = ndc.xy * 0.5 + 0.5;
     q.receiverDepth = dot(p - uLightEye[i], uLightForward[i]);
     q.depthRange = uLightDepthRange[i];
-    q.zf = techniqueRelativeDepth(q.receiverDepth, q.depthRange) - uDepthBias;
+    float z = relativeDepth(q.receiverDepth, q.depthRange);
+    q.zf = z - uDepthBias;
     q.tanTheta = min(sqrt(1.0 - cosTheta * cosTheta) / cosTheta, 10.0);
     q.isSpot = uLightIsSpot[i];
     q.frustumScale = uSlotFrustumScale[slot];
     q.lightSize = uLightSize[i];
     q.texelWorld = texelWorldAt(q, q.receiverDepth);
     q.texelDepth = q.texelWorld / (q.depthRange.y - q.depthRange.x);
-    return SL_SHADOW_INTENSITY(q);
+    float G = SL_SHADOW_INTENSITY(q);
+    // relativeDepth still the stub (-1): G is "not computed", never "lit". -3 keeps a stub G
+    // (-1) visible too, so that the renderer names both stages (noteLightingStubs).
+    if (z == -1.0) G = G == -1.0 ? -3.0 : -2.0;
+    return G;
 }
-#endif
 
 // G for light i at world position p, from the map (cascade) that covers p. Sampler arrays take
 // dynamically uniform indices only (llvmpipe shades a SIMD group with one index): so the loop
@@ -216,8 +200,9 @@ void main() {
         if (uLightShadowMap[i] >= 0) {
             G = shadowIntensity(i, vWorldPosition);
             if (!firstSeen) { firstShadow = G; firstSeen = true; }
-            // Out of [0, 1] or NaN (the stub returns -1): show it, do not hide it by clamping.
-            if (!(G >= 0.0 && G <= 1.0)) broken = true;
+            // Out of [0, 1] or NaN (a stub returns -1): shade as lit and hatch it in magenta
+            // below, so the scene stays readable but the gap cannot be mistaken for light.
+            if (!(G >= 0.0 && G <= 1.0)) { broken = true; G = 0.0; }
         }
         vec3 h = normalize(l + v);
         float diffuse = max(dot(n, l), 0.0);
@@ -225,6 +210,8 @@ void main() {
         color += (1.0 - G) * cone * uLightColor[i] * (diffuse * uAlbedo + specular);
         ++i;
     } while (i < uLightCount);
-    outColor = broken ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(color, 1.0);
+    // Diagonal magenta stripes, 3 of every 8 pixels, where some light's G was not computed.
+    bool stripe = ((int(gl_FragCoord.x) + int(gl_FragCoord.y)) & 7) < 3;
+    outColor = broken && stripe ? vec4(1.0, 0.0, 1.0, 1.0) : vec4(color, 1.0);
     outShadow = firstShadow;
 }

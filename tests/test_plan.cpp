@@ -115,16 +115,17 @@ const std::vector<Expected> kLadder = {
     {Technique::Pcf, FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
-    // Gaussian: raw + scratch + filtered; the framework SAT: raw + hi + lo, and the resolve's
-    // filtered map (output only; PlanOptions::resolveSat).
+    // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table, and the resolve's
+    // filtered map (output only; PlanOptions::resolveSat). A map a filter stage reads is
+    // RGBA32F (the stage contract's format), so VSM's two channels fill half of each texel.
     {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
-     "RG32F", 1, 8, 4 + 3 * 8, 2},
+     "RGBA32F", 1, 16, 4 + 3 * 16, 2},
     {Technique::Vsm, FilterKind::Sat,
-     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RG32F", 1, 8,
-     4 + 4 * 8, 2},
+     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
+     4 + 4 * 16, 2},
     {Technique::Vsm, FilterKind::None, {K::Shadow, K::Lighting}, "RG32F", 1, 8, 4 + 8, 2},
     {Technique::Evsm2, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
-     "RG32F", 1, 8, 4 + 24, 2},
+     "RGBA32F", 1, 16, 4 + 48, 2},
     {Technique::Evsm4, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 48, 4},
     // CSM, M = 8 terms (the default): 16 channels in four RGBA32F maps, each filtered.
@@ -138,12 +139,14 @@ const std::vector<Expected> kLadder = {
      "RGBA32F", 1, 16, 4 + 48, 4},
     {Technique::Msm4Hausdorff, FilterKind::Gaussian,
      {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA32F", 1, 16, 4 + 48, 4},
-    // 16 bits: half of msm4's map; the SAT of it is float32 again (sums exceed 1).
+    // 16 bits: half of msm4's map, widened to RGBA32F for the filter stages.
     {Technique::Msm4_16bit, FilterKind::Gaussian,
-     {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA16", 1, 8, 4 + 24, 4},
+     {K::Shadow, K::Widen, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA16", 1, 8,
+     4 + 8 + 3 * 16, 4},
     {Technique::Msm4_16bit, FilterKind::Sat,
-     {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA16", 1, 8,
-     4 + 8 + 32 + 8, 4},
+     {K::Shadow, K::Widen, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA16", 1, 8,
+     4 + 8 + 4 * 16, 4},
+    {Technique::Msm4_16bit, FilterKind::None, {K::Shadow, K::Lighting}, "RGBA16", 1, 8, 4 + 8, 4},
     {Technique::MsmSoft, FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
      4 + 64, 4},
@@ -205,6 +208,10 @@ TEST(PassPlan, ExplainNamesFormatMemoryAndParameters) {
     s.shadow.mapSize = 512;
     std::string text = explainPlan(s, planPasses(s));
     EXPECT_NE(text.find("technique vsm"), std::string::npos) << text;
+    EXPECT_NE(text.find("RGBA32F"), std::string::npos) << text;
+    EXPECT_NE(text.find("4.00 MiB"), std::string::npos) << text;  // 512² × 16 bytes (filtered)
+    s.shadow.filter = FilterKind::None;
+    text = explainPlan(s, planPasses(s));
     EXPECT_NE(text.find("RG32F"), std::string::npos) << text;
     EXPECT_NE(text.find("2.00 MiB"), std::string::npos) << text;  // 512² × 8 bytes
     EXPECT_NE(text.find("bleedReduction=0.18"), std::string::npos) << text;

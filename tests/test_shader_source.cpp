@@ -1,6 +1,7 @@
 // Shader loading: #include lookup order, and errors that name the student's file and line.
 #include "gl_program.h"
 #include "gl_test_support.h"
+#include "technique.h"
 
 #include <fstream>
 
@@ -19,7 +20,7 @@ fs::path solutionWith(const std::string& testName, const std::string& file,
 
 std::string compileError(const ShaderLibrary& lib, const std::string& vs, const std::string& fs) {
     try {
-        GlProgram::graphics(lib, vs, fs, {"SL_TECHNIQUE_MSM4"});
+        GlProgram::graphics(lib, vs, fs, techniqueDefines(ShadowEffect{}));  // msm4, Gaussian
     } catch (const ShaderError& e) {
         return e.what();
     }

@@ -25,7 +25,18 @@ struct SheetEntry {
     std::string name, summary;
     double totalMs = 0.0;
     std::string passRows;  // HTML rows
+    bool standIn = false;  // the golden reference image, not rendered here
 };
+
+// A row whose own files solve a stage is not in the student kit (TechniqueRow::solvesStage):
+// there the sheet shows its reference image, made by `shadowlab golden` at the demo's sheet
+// width, when the scene has one; "" if the row renders here or has no image.
+fs::path standInImage(const TechniqueRow& row, const std::string& scenePath) {
+    if (row.solvesStage.empty() || fs::exists(repoRoot() / "shaders" / row.lightingFile)) return {};
+    const fs::path image = repoRoot() / "scenes" / "goldens" / fs::path(scenePath).stem() /
+                           "ladder" / (row.name + ".png");
+    return fs::exists(image) ? image : fs::path("-");
+}
 
 // The contact sheet: final images in a grid of `columns`, each labelled with its technique and
 // total pass time (image_codec.h; the HTML sheet always names every image).
@@ -34,7 +45,8 @@ void writeSheetPng(const fs::path& outDir, const std::vector<SheetEntry>& entrie
     for (const auto& e : entries) {
         images.push_back((outDir / e.name / "final.png").string());
         char label[128];
-        std::snprintf(label, sizeof label, "%s  %.0f ms", e.name.c_str(), e.totalMs);
+        if (e.standIn) std::snprintf(label, sizeof label, "%s (golden)", e.name.c_str());
+        else std::snprintf(label, sizeof label, "%s  %.0f ms", e.name.c_str(), e.totalMs);
         labels.push_back(label);
     }
     imageCodec().contactSheet((outDir / "sheet.png").string(), images, labels, columns);
@@ -52,11 +64,13 @@ void writeSheetHtml(const fs::path& outDir, const Scene& scene,
          << htmlEscape(scene.description) << "</p>\n<p>" << htmlEscape(info.renderer) << ", "
          << htmlEscape(info.version) << ". <a href=\"sheet.png\">contact sheet PNG</a></p>\n"
          << "<div class=\"grid\">\n";
-    for (const auto& e : entries)
+    for (const auto& e : entries) {
         html << "<figure><img src=\"" << e.name << "/final.png\" alt=\"" << e.name
-             << "\"><figcaption><b>" << e.name << "</b> — " << htmlEscape(e.summary)
-             << " (total " << std::fixed << e.totalMs << " ms)<table>" << e.passRows
-             << "</table></figcaption></figure>\n";
+             << "\"><figcaption><b>" << e.name << "</b> — " << htmlEscape(e.summary);
+        if (e.standIn) html << "</figcaption></figure>\n";
+        else html << " (total " << std::fixed << e.totalMs << " ms)<table>" << e.passRows
+                  << "</table></figcaption></figure>\n";
+    }
     html << "</div>\n";
 }
 
@@ -82,12 +96,27 @@ int runCompare(const std::string& scenePath, const std::string& techniques,
     for (const std::string& spec : specs) {
         Scene scene = loaded;
         auto [technique, parameters] = parseTechniqueSpec(spec);
+        const TechniqueRow& row = techniqueRow(technique);
+        if (const fs::path standIn = standInImage(row, scenePath); !standIn.empty()) {
+            const std::string why = "not in the student kit: " + row.solvesStage;
+            if (standIn == "-") {
+                std::cout << "skipped " << row.name << " (" << why << "; no reference image for "
+                          << "this scene)\n";
+                continue;
+            }
+            fs::create_directories(fs::path(outDir) / row.name);
+            fs::copy_file(standIn, fs::path(outDir) / row.name / "final.png",
+                          fs::copy_options::overwrite_existing);
+            std::cout << row.name << ": the reference image (" << why << ")\n";
+            entries.push_back({row.name, row.summary + "; reference image, " + why, 0.0, "", true});
+            continue;
+        }
         overrideTechnique(scene.shadow, technique, parameters);
         PassPlan plan = planPasses(scene);
         RenderResult result = renderer.render(scene, plan);
         std::string folder = spec;  // "vsm:bleedReduction=0.3" -> "vsm_bleedReduction-0.3"
         for (char& c : folder) c = c == ':' ? '_' : c == '=' ? '-' : c;
-        SheetEntry e{folder, techniqueRow(technique).summary};
+        SheetEntry e{folder, row.summary};
         if (sheetOnly) {  // the one image the sheet shows (the rest: 2.5-3.3 -> 1.0-1.4 s a 256-px sheet)
             fs::create_directories(fs::path(outDir) / e.name);
             writePngPreview(result.images.at("final"), fs::path(outDir) / e.name / "final.png", true);

@@ -1,6 +1,6 @@
-// Renderer's filter passes: copy, separable Gaussian (student RGBA32F and any-format framework
-// variants), summed-area tables (student and double-float framework) and the SAT resolve.
-// One dispatch each; the benchmark and the grader call them directly.
+// Renderer's filter passes: copy, widen, the solution's separable Gaussian and summed-area table
+// (RGBA32F, one layer per dispatch) and the SAT resolve. One dispatch each; the benchmark and
+// the grader call them directly.
 #include "render_internal.h"
 #include "renderer.h"
 
@@ -85,30 +85,13 @@ const BufferHandle& Renderer::weightsBuffer(int radius, float sigma) {
     return buffer;
 }
 
-void Renderer::techniqueGaussianPass(const Texture& src, const Texture& dst, int radius,
-                                     float sigma, glm::ivec2 direction) {
-    GlProgram& p = techniqueProgram(PassKind::GaussianX, false, src.format, radius, {});
+void Renderer::widenPass(const Texture& src, const Texture& dst) {
+    GlProgram& p = passProgram(PassKind::Widen, 0, {});
     p.use();
-    p.set("uRadius", radius);
-    p.set("uDirection", direction);
-    p.set("uImageSize", glm::ivec2(src.width, src.height));
-    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, weightsBuffer(radius, sigma).id());
-    gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, src.format);
-    gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, dst.format);
-    dispatchTexelRuns(p, {src.width, src.height}, direction);
-}
-
-void Renderer::techniqueSatPass(const Texture& src, const Texture& hi, const Texture& lo,
-                                glm::ivec2 direction) {
-    const bool rows = direction.x == 1;
-    GlProgram& p = techniqueProgram(rows ? PassKind::SatRows : PassKind::SatColumns, false,
-                                    src.format, 0, {});
-    p.use();
-    p.set("uImageSize", glm::ivec2(hi.width, hi.height));
-    if (rows) gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, src.format);
-    gl::BindImageTexture(1, hi.id(), 0, GL_FALSE, 0, GL_READ_WRITE, hi.format);
-    gl::BindImageTexture(2, lo.id(), 0, GL_FALSE, 0, GL_READ_WRITE, lo.format);
-    dispatchLines(p, {hi.width, hi.height}, direction, true);
+    p.set("uSource", 0);
+    gl::BindTextureUnit(0, src.id());
+    gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    dispatchLines(p, {src.width, src.height}, {1, 0}, false);
 }
 
 void Renderer::satPass(const Texture& src, const Texture& dst, glm::ivec2 direction) {

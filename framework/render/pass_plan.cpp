@@ -16,6 +16,7 @@ const char* toString(PassKind kind) {
     switch (kind) {
         case PassKind::Shadow: return "shadow";
         case PassKind::ShadowSecond: return "shadow-second";
+        case PassKind::Widen: return "widen";
         case PassKind::GaussianX: return "gaussian-x";
         case PassKind::GaussianY: return "gaussian-y";
         case PassKind::SatRows: return "sat-rows";
@@ -84,53 +85,33 @@ void planLightMaps(PassPlan& plan, const Scene& scene, int i, int c, const std::
                                "second-depth: peel the first surface, store the midpoint",
                                "second"});
     }
-    if (!filterPasses) return;
-    switch (fx.filter) {
-        case FilterKind::None: break;
-        case FilterKind::Gaussian: {
-            const std::string why = "gaussian filter, radius " +
-                                    std::to_string(fx.gaussianRadius);
-            add(tex(i, -1, "scratch", map.formatName, map.glFormat, n, n, map.layers,
-                    map.bytesPerTexel));
-            add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
-                    map.bytesPerTexel));
-            pass({PassKind::GaussianX, i, -1, why, "scratch"});
-            pass({PassKind::GaussianY, i, -1, why, "filtered"});
-            break;
-        }
-        case FilterKind::Sat: {
-            char why[64];
-            std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels",
-                          fx.satKernelTexels);
-            if (row.studentStages) {
-                add(tex(i, -1, "scratch", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
-                add(tex(i, -1, "sat", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
-                pass({PassKind::SatRows, i, -1, why, "scratch"});
-                pass({PassKind::SatColumns, i, -1, why, "sat"});
-                if (options.resolveSat) {
-                    add(tex(i, -1, "filtered", "RGBA32F", GL_RGBA32F, n, n, 1, 16));
-                    pass({PassKind::SatResolve, i, -1,
-                                           "filtered moments requested as output",
-                                           "filtered"});
-                }
-            } else {
-                // Double-float pairs: float32 sums of a 1024² map lose the digits a box
-                // average needs; hi + lo keep ~48 bits (docs/techniques.md).
-                const int bpt = map.channels * 4;
-                add(tex(i, -1, "sat-hi", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
-                add(tex(i, -1, "sat-lo", map.satFormatName, map.satFormat, n, n, map.layers, bpt));
-                pass({PassKind::SatRows, i, -1, why, "sat-hi"});
-                pass({PassKind::SatColumns, i, -1, why + std::string(", in place"),
-                                       "sat-hi"});
-                if (options.resolveSat) {
-                    add(tex(i, -1, "filtered", map.formatName, map.glFormat, n, n, map.layers,
-                            map.bytesPerTexel));
-                    pass({PassKind::SatResolve, i, -1,
-                                           "filtered map requested as output", "filtered"});
-                }
-            }
-            break;
-        }
+    if (!filterPasses || fx.filter == FilterKind::None) return;
+    // The filter stages take RGBA32F layers (the stage contract): a 16-bit map is widened first.
+    auto rgba32f = [&](const char* role) {
+        add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, n, n, map.layers, 16));
+    };
+    if (map.glFormat != GL_RGBA32F) {
+        rgba32f("wide");
+        pass({PassKind::Widen, i, -1, map.formatName + " map into RGBA32F for the filter stages",
+              "wide"});
+    }
+    if (fx.filter == FilterKind::Gaussian) {
+        const std::string why = "gaussian filter, radius " + std::to_string(fx.gaussianRadius);
+        rgba32f("scratch");
+        rgba32f("filtered");
+        pass({PassKind::GaussianX, i, -1, why, "scratch"});
+        pass({PassKind::GaussianY, i, -1, why, "filtered"});
+        return;
+    }
+    char why[64];
+    std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
+    rgba32f("scratch");
+    rgba32f("sat");
+    pass({PassKind::SatRows, i, -1, why, "scratch"});
+    pass({PassKind::SatColumns, i, -1, why, "sat"});
+    if (options.resolveSat) {
+        rgba32f("filtered");
+        pass({PassKind::SatResolve, i, -1, "filtered map requested as output", "filtered"});
     }
 }
 

@@ -14,22 +14,23 @@
 namespace sl {
 
 enum class PassKind {
-    Shadow,        // light view: stores the technique's map (msm4: moments.glsl)
+    Shadow,        // light view: stores the technique's map (relativeDepth, computeMoments)
     ShadowSecond,  // second-depth: peels the first surface, stores the midpoint depth
-    GaussianX,     // Gaussian along rows (msm4: gaussian_blur.comp)
+    Widen,         // a 16-bit map copied into RGBA32F, the filter stages' format
+    GaussianX,     // Gaussian along rows (the solution's gaussian_blur.comp), per layer
     GaussianY,     // Gaussian along columns
-    SatRows,       // prefix sums along rows (msm4: sat.comp)
+    SatRows,       // prefix sums along rows (the solution's sat.comp), per layer
     SatColumns,    // prefix sums along columns
-    SatResolve,    // sat_lookup.glsl at every texel: the filtered moments, for output only
+    SatResolve,    // satBoxAverage at every texel: the filtered map, for output only
     Lighting,      // camera view: the technique's shadowIntensity... shades the image
 };
 
 const char* toString(PassKind);
 
 // A texture the plan allocates. Roles per light: "depth" (the shadow pass's depth buffer),
-// "raw" (the technique's map), "second" (second-depth midpoint), "scratch" and "filtered"
-// (Gaussian), "sat" (msm4's SAT), "sat-hi"/"sat-lo" (the framework SAT as double-float pairs);
-// per camera: "color", "shadow", "camera-depth".
+// "raw" (the technique's map), "second" (second-depth midpoint), "wide" (a 16-bit map in
+// RGBA32F for the filters), "scratch" (the filters' first pass), "filtered" (Gaussian, or the
+// SAT resolve), "sat" (the summed-area table); per camera: "color", "shadow", "camera-depth".
 struct PlannedTexture {
     int light = -1;
     int camera = -1;
@@ -62,10 +63,9 @@ struct PlannedCascade {
 
 struct PlanOptions {
     // Produce the filtered map of a SAT scene (the SAT itself is not a moment map): a
-    // SatResolve pass evaluates the lighting's box lookup at every texel centre (msm4: the
-    // student's satBoxAverage; other techniques: boxAverage of the double-float table, with
-    // the scene's kernel, techniques/sat_resolve.comp). The grader and `render` want it; an
-    // interactive viewer and the study's timings do not (lighting reads the table itself).
+    // SatResolve pass evaluates the solution's satBoxAverage at every texel centre, with the
+    // scene's kernel. The grader and `render` want it; an interactive viewer and the study's
+    // timings do not (lighting reads the table itself).
     bool resolveSat = true;
 };
 

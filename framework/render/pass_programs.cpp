@@ -2,8 +2,6 @@
 // or all at once by compilePrograms, the warm-up before a render's first pass.
 #include "render_internal.h"
 #include "renderer.h"
-#include "technique.h"
-
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -39,7 +37,10 @@ GlProgram& Renderer::program(const std::string& first, const std::string& fragme
 GlProgram& Renderer::passProgram(PassKind kind, int blurRadius,
                                  const std::vector<std::string>& defines) {
     switch (kind) {
-        case PassKind::Shadow: return program("scene.vert", "shadow_moments.frag", defines);
+        case PassKind::Shadow: return program("scene.vert", "techniques/store.frag", defines);
+        case PassKind::ShadowSecond:
+            return program("scene.vert", "techniques/second_depth_peel.frag", defines);
+        case PassKind::Widen: return program("widen.comp", "", {});
         case PassKind::GaussianX:
         case PassKind::GaussianY:
             // The radius is a compile-time constant (one program per radius): llvmpipe then
@@ -50,48 +51,16 @@ GlProgram& Renderer::passProgram(PassKind kind, int blurRadius,
         case PassKind::SatColumns: return program("sat.comp", "", {});
         case PassKind::SatResolve: return program("sat_resolve.comp", "", {});
         case PassKind::Lighting: return program("scene.vert", "lighting.frag", defines);
-        case PassKind::ShadowSecond: break;  // framework techniques only (techniqueProgram)
     }
     throw std::logic_error("no program for this pass");
 }
 
-GlProgram& Renderer::techniqueProgram(PassKind kind, bool studentStages, unsigned mapFormat,
-                                      int blurRadius, const std::vector<std::string>& defines) {
-    if (studentStages || kind == PassKind::Lighting) return passProgram(kind, blurRadius, defines);
-    const std::string format = "SL_MAP_FORMAT=" + imageFormat(mapFormat);
-    switch (kind) {
-        case PassKind::Shadow: return program("scene.vert", "techniques/store.frag", defines);
-        case PassKind::ShadowSecond:
-            return program("scene.vert", "techniques/second_depth_peel.frag", defines);
-        case PassKind::GaussianX:
-        case PassKind::GaussianY:
-            // One program per (format, radius), like the student's per radius: a compile-time
-            // radius lets llvmpipe unroll the taps and keep the register tile in registers.
-            return program("techniques/filter_gaussian.comp", "",
-                           {format, "SL_BLUR_RADIUS=" + std::to_string(blurRadius)});
-        case PassKind::SatResolve: return program("techniques/sat_resolve.comp", "", {format});
-        case PassKind::SatRows:
-        case PassKind::SatColumns: {
-            // The table's own format: float32 with the map's channel count.
-            const GLenum sat = mapFormat == GL_RGBA16 ? GL_RGBA32F : GLenum(mapFormat);
-            std::vector<std::string> d = {format, "SL_SAT_FORMAT=" + imageFormat(sat)};
-            if (kind == PassKind::SatColumns) d.push_back("SL_SAT_COLUMNS");
-            return program("techniques/filter_sat.comp", "", d);
-        }
-        default: break;
-    }
-    throw std::logic_error(std::string("no framework program for pass ") + toString(kind));
-}
-
 void Renderer::compilePrograms(const Scene& scene, const PassPlan& plan) {
-    const ShadowEffect& fx = scene.shadow;
-    const bool studentStages = techniqueRow(fx.technique).studentStages;
-    const unsigned format = mapLayout(fx).glFormat;
     // The very programs the passes take: the Gaussians' with the scene's radius (a
     // compile-time constant), the lighting's for the plan.
     for (const PlannedPass& pass : plan.passes) {
         if (pass.kind == PassKind::Lighting) lightingProgram(plan);
-        else techniqueProgram(pass.kind, studentStages, format, fx.gaussianRadius, plan.defines);
+        else passProgram(pass.kind, scene.shadow.gaussianRadius, plan.defines);
     }
 }
 

@@ -45,20 +45,24 @@ void noteStub(const ShaderLibrary& library, RenderResult& result, const std::str
               const std::string& function);
 
 // Reads the maps back into `result`, and tells unimplemented stages apart from wrong ones by
-// the stub value (student stages only).
+// the stub value.
 void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
               const PassPlan& plan, ShadowMapSet& maps, RenderResult& result);
+// The stubs the lighting pass shows in the first light's G (`shadow`): -1 from msm.glsl's
+// momentShadowIntensity, -2 where relativeDepth returned its stub value, -3 both (lighting.frag).
+void noteLightingStubs(const ShaderLibrary& library, const TechniqueRow& row, const Image& shadow,
+                       RenderResult& result);
 
 // The shadow pass (or the second-depth peel) of one light into its maps, with program `p`.
 void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
-                   const ShadowEffect& fx, bool studentStages, const SceneGeometry& geometry);
+                   const ShadowEffect& fx, const SceneGeometry& geometry);
 
 // The lighting pass of camera `cam` into `color`/`shadow`/`depth` (created here), with program
 // `p` and every light's maps (every cascade's) bound as the lighting samples them; `plan`
 // gives the cascades' depth ranges.
 void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, const Camera& cam,
                      const std::vector<LightView>& views, ShadowMapSet& maps,
-                     bool studentStages, const SceneGeometry& geometry, Texture& color,
+                     const SceneGeometry& geometry, Texture& color,
                      Texture& shadow, Texture& depth);
 
 // GLSL image format qualifier of a map format ("r32f", "rgba16", ...); pass_programs.cpp.

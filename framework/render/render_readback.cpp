@@ -1,8 +1,6 @@
 // Renderer's read-back: the maps of every shadowing light into RenderResult's images, and the
-// stub detection that tells a student's unimplemented stage (output -1) from a wrong one.
+// stub detection that tells an unimplemented stage (output -1) from a wrong one.
 #include "render_internal.h"
-
-#include <algorithm>
 
 namespace sl::render_detail {
 bool stubOutput(const Image& out, const Image* in, bool everywhere) {
@@ -25,55 +23,57 @@ void noteStub(const ShaderLibrary& library, RenderResult& result, const std::str
 
 void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
               const PassPlan& plan, ShadowMapSet& maps, RenderResult& result) {
+    const bool moments = row.storeDefine.rfind("SL_STORE_MOMENTS4", 0) == 0;
     for (auto& [id, m] : maps) {
         const int li = id.light;
         const std::string suffix =
             (li == plan.shadowLights.front() ? "" : "_light" + std::to_string(li)) +
             (id.cascade > 0 ? "_cascade" + std::to_string(id.cascade) : "");
-        const auto& rawLayers = m.tex.at("raw");
-        Image raw = rawLayers.front().read();
-        if (!row.studentStages) {
-            for (size_t k = 1; k < rawLayers.size(); ++k)
-                result.images["moments_raw" + suffix + "_layer" + std::to_string(k)] =
-                    rawLayers[k].read();
-            if (m.tex.count("second")) result.images["second_depth" + suffix] = m.one("second").read();
-            if (m.tex.count("filtered")) {
-                const auto& filteredLayers = m.tex.at("filtered");
-                result.images["moments_filtered" + suffix] = filteredLayers.front().read();
-                for (size_t k = 1; k < filteredLayers.size(); ++k)
-                    result.images["moments_filtered" + suffix + "_layer" + std::to_string(k)] =
-                        filteredLayers[k].read();
-            }
-            else if (!m.tex.count("sat-hi"))
-                result.images["moments_filtered" + suffix] = raw;
-            result.images["moments_raw" + suffix] = std::move(raw);
-            continue;
-        }
-        if (stubOutput(raw, nullptr)) noteStub(library, result, "moments.glsl", "computeMoments");
-        if (fx.filter == FilterKind::Gaussian) {
-            Image filtered = m.one("filtered").read();
-            if (stubOutput(filtered, &raw))
-                noteStub(library, result, "gaussian_blur.comp", "gaussian blur pass");
-            result.images["moments_filtered" + suffix] = std::move(filtered);
-        } else if (fx.filter == FilterKind::Sat) {
-            Image sat = m.one("sat").read();
+        // Every layer of a role, as "<name><suffix>", "<name><suffix>_layer1", ...
+        auto readLayers = [&](const std::string& role, const std::string& name) {
+            const auto& layers = m.tex.at(role);
+            for (size_t k = 1; k < layers.size(); ++k)
+                result.images[name + suffix + "_layer" + std::to_string(k)] = layers[k].read();
+            return layers.front().read();
+        };
+        Image raw = readLayers("raw", "moments_raw");
+        // The stub value in every channel: computeMoments' stub, or a depth map of relativeDepth's.
+        if (!m.given && stubOutput(raw, nullptr))
+            noteStub(library, result, "moments.glsl", moments ? "computeMoments" : "relativeDepth");
+        if (m.tex.count("second")) result.images["second_depth" + suffix] = m.one("second").read();
+        if (m.tex.count("sat")) {
+            Image sat = readLayers("sat", "sat");
             if (stubOutput(sat, &raw)) noteStub(library, result, "sat.comp", "prefix-sum pass");
-            if (plan.passes.end() != std::find_if(plan.passes.begin(), plan.passes.end(),
-                                                  [](const PlannedPass& p) {
-                                                      return p.kind == PassKind::SatResolve;
-                                                  })) {
-                Image filtered = m.one("filtered").read();
+            if (m.tex.count("filtered")) {
+                Image filtered = readLayers("filtered", "moments_filtered");
                 // A stub table makes a correct lookup return ~0, never -1 everywhere.
                 if (stubOutput(filtered, &sat) || stubOutput(filtered, nullptr, true))
                     noteStub(library, result, "sat_lookup.glsl", "satBoxAverage");
                 result.images["moments_filtered" + suffix] = std::move(filtered);
             }
             result.images["sat" + suffix] = std::move(sat);
+        } else if (m.tex.count("filtered")) {
+            Image filtered = readLayers("filtered", "moments_filtered");
+            if (fx.filter == FilterKind::Gaussian && stubOutput(filtered, &raw))
+                noteStub(library, result, "gaussian_blur.comp", "gaussian blur pass");
+            result.images["moments_filtered" + suffix] = std::move(filtered);
         } else {
             result.images["moments_filtered" + suffix] = raw;
         }
         result.images["moments_raw" + suffix] = std::move(raw);
     }
+}
+
+void noteLightingStubs(const ShaderLibrary& library, const TechniqueRow& row, const Image& shadow,
+                       RenderResult& result) {
+    bool msmStub = false, depthStub = false;
+    for (std::size_t i = 0, n = std::size_t(shadow.width) * shadow.height; i < n; ++i) {
+        const float g = shadow.pixels[i * shadow.channels];
+        msmStub = msmStub || g == -1.0f || g == -3.0f;
+        depthStub = depthStub || g == -2.0f || g == -3.0f;
+    }
+    if (depthStub) noteStub(library, result, "moments.glsl", "relativeDepth");
+    if (msmStub && row.msmStage) noteStub(library, result, "msm.glsl", "momentShadowIntensity");
 }
 
 }  // namespace sl::render_detail

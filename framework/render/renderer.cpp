@@ -107,7 +107,6 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         // A given second-depth map: what its (skipped) peel pass would have added.
         if (m.givenRaw && m.tex.count("second")) m.forLighting.push_back(&m.one("second"));
     }
-    const MapLayout layout = mapLayout(fx);
     const std::vector<glm::vec4> clear = shadowClearValues(fx);
 
     struct CameraTargets { Texture color, shadow, depth; };
@@ -127,30 +126,29 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             result.passMillis.push_back(0.0);
             continue;
         }
+        // A filter's input: the raw map, or its RGBA32F copy where it is not RGBA32F.
+        auto filterInput = [&]() -> std::vector<Texture>& {
+            return m->tex.count("wide") ? m->tex.at("wide") : m->tex.at("raw");
+        };
         switch (pass.kind) {
             case PassKind::Shadow:
-            case PassKind::ShadowSecond: {
-                GlProgram& p = row.studentStages
-                                   ? passProgram(PassKind::Shadow, 0, defines)
-                                   : techniqueProgram(pass.kind, false, layout.glFormat, 0,
-                                                      defines);
-                runShadowPass(p, pass.kind == PassKind::ShadowSecond, *m, clear, fx,
-                              row.studentStages, geometry);
+            case PassKind::ShadowSecond:
+                runShadowPass(passProgram(pass.kind, 0, defines),
+                              pass.kind == PassKind::ShadowSecond, *m, clear, fx, geometry);
+                break;
+            case PassKind::Widen: {
+                auto& raw = m->tex.at("raw");
+                for (size_t k = 0; k < raw.size(); ++k) widenPass(raw[k], m->tex.at("wide")[k]);
                 break;
             }
             case PassKind::GaussianX:
             case PassKind::GaussianY: {
                 const bool x = pass.kind == PassKind::GaussianX;
-                auto& src = m->tex.at(x ? "raw" : "scratch");
+                auto& src = x ? filterInput() : m->tex.at("scratch");
                 auto& dst = m->tex.at(x ? "scratch" : "filtered");
-                for (size_t k = 0; k < src.size(); ++k) {
-                    if (row.studentStages)
-                        gaussianPass(src[k], dst[k], fx.gaussianRadius, fx.gaussianSigma,
-                                     x ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
-                    else
-                        techniqueGaussianPass(src[k], dst[k], fx.gaussianRadius, fx.gaussianSigma,
-                                              x ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
-                }
+                for (size_t k = 0; k < src.size(); ++k)
+                    gaussianPass(src[k], dst[k], fx.gaussianRadius, fx.gaussianSigma,
+                                 x ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
                 if (!x) {
                     m->forLighting.clear();
                     for (auto& t : dst) m->forLighting.push_back(&t);
@@ -159,42 +157,27 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             }
             case PassKind::SatRows:
             case PassKind::SatColumns: {
-                const glm::ivec2 dir = pass.kind == PassKind::SatRows ? glm::ivec2(1, 0)
-                                                                      : glm::ivec2(0, 1);
-                if (row.studentStages) {
-                    if (pass.kind == PassKind::SatRows) {
-                        satPass(m->one("raw"), m->one("scratch"), dir);
-                    } else {
-                        satPass(m->one("scratch"), m->one("sat"), dir);
-                        m->forLighting = {&m->one("sat")};
-                    }
-                    break;
-                }
-                auto& raw = m->tex.at("raw");
-                auto& hi = m->tex.at("sat-hi");
-                auto& lo = m->tex.at("sat-lo");
-                m->forLighting.clear();
-                for (size_t k = 0; k < raw.size(); ++k) {
-                    techniqueSatPass(raw[k], hi[k], lo[k], dir);
-                    m->forLighting.push_back(&hi[k]);
-                    m->forLighting.push_back(&lo[k]);
+                const bool rows = pass.kind == PassKind::SatRows;
+                auto& src = rows ? filterInput() : m->tex.at("scratch");
+                auto& dst = m->tex.at(rows ? "scratch" : "sat");
+                for (size_t k = 0; k < src.size(); ++k)
+                    satPass(src[k], dst[k], rows ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
+                if (!rows) {
+                    m->forLighting.clear();
+                    for (auto& t : dst) m->forLighting.push_back(&t);
                 }
                 break;
             }
-            case PassKind::SatResolve:
-                if (row.studentStages) {
-                    satResolvePass(m->one("sat"), m->one("filtered"), fx.satKernelTexels);
-                    break;
-                }
-                for (size_t k = 0; k < m->tex.at("filtered").size(); ++k)
-                    techniqueSatResolvePass(m->tex.at("sat-hi")[k], m->tex.at("sat-lo")[k],
-                                            m->tex.at("filtered")[k], fx.satKernelTexels);
+            case PassKind::SatResolve: {
+                auto& sat = m->tex.at("sat");
+                for (size_t k = 0; k < sat.size(); ++k)
+                    satResolvePass(sat[k], m->tex.at("filtered")[k], fx.satKernelTexels);
                 break;
+            }
             case PassKind::Lighting: {
                 CameraTargets& t = targets[pass.camera];
-                runLightingPass(lightingProgram(plan), scene, plan,
-                                scene.cameras.at(pass.camera), views, maps, row.studentStages,
-                                geometry, t.color, t.shadow, t.depth);
+                runLightingPass(lightingProgram(plan), scene, plan, scene.cameras.at(pass.camera),
+                                views, maps, geometry, t.color, t.shadow, t.depth);
                 break;
             }
         }
@@ -215,8 +198,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     for (const auto& [ci, t] : targets) {
         const std::string suffix = ci == 0 ? "" : "_" + scene.cameras[ci].name;
         Image shadow = t.shadow.read();
-        if (row.studentStages && !maps.empty() && stubOutput(shadow, nullptr))
-            noteStub(library_, result, "msm.glsl", "momentShadowIntensity");
+        if (!maps.empty()) noteLightingStubs(library_, row, shadow, result);
         Image color = t.color.read();
         Image rgb(color.width, color.height, 3);
         for (size_t i = 0, count = size_t(color.width) * color.height; i < count; ++i)

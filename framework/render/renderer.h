@@ -19,7 +19,8 @@
 namespace sl {
 
 // What one light's shadow pass(es) wrote, in the map's own format: the plan's "raw" role (the
-// technique's map: R32F depth for hard/pcf/pcss/second-depth, RG32F (z, z²) for vsm, RGBA32F
+// technique's map: R32F depth for hard/pcf/pcss/second-depth, RG32F (z, z²) for unfiltered vsm
+// (RGBA32F when a filter stage reads it, mapLayout), RGBA32F
 // moments for msm4/msm4-hausdorff/evsm4/msm-soft, RGBA16 for msm4-16bit, several RGBA32F
 // layers for csm, ...) and, for second-depth, the peeled "second" map. Image channels follow
 // the format (Texture::read); RGBA16 values are read as floats k/65535 and upload back to
@@ -85,6 +86,8 @@ public:
 
     // One dispatch each, src -> dst (both RGBA32F, same size). Compile on first use.
     void copyPass(const Texture& src, const Texture& dst);
+    // src of any format (sampled) -> dst RGBA32F, same size (shaders/widen.comp).
+    void widenPass(const Texture& src, const Texture& dst);
     void gaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
                       glm::ivec2 direction);
     void satPass(const Texture& src, const Texture& dst, glm::ivec2 direction);
@@ -103,24 +106,9 @@ private:
     // The program a pass kind runs: the one place that names its files and permutation.
     // `blurRadius`: Gaussian passes; `defines`: the technique/filter ones of the scene.
     GlProgram& passProgram(PassKind kind, int blurRadius, const std::vector<std::string>& defines);
-    // The framework's programs of the techniques other than msm4 (shaders/techniques/): their
-    // maps are not RGBA32F, so the student's filter stages cannot run on them. `blurRadius`:
-    // Gaussian passes (a compile-time constant of both Gaussians).
-    GlProgram& techniqueProgram(PassKind kind, bool studentStages, unsigned mapFormat,
-                                int blurRadius, const std::vector<std::string>& defines);
     // The lighting pass's program for `plan`: its defines plus how many light/cascade slots
     // have maps (SL_SHADOW_SLOTS, lighting.frag).
     GlProgram& lightingProgram(const PassPlan& plan);
-    // Any map format: the same Gaussian weights as gaussianPass, src -> dst.
-    void techniqueGaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
-                               glm::ivec2 direction);
-    // The SAT as double-float pairs: rows from `src` into (hi, lo); columns in place.
-    void techniqueSatPass(const Texture& src, const Texture& hi, const Texture& lo,
-                          glm::ivec2 direction);
-    // The double-float SAT (hi, lo) back into a filtered map `dst` (the map's format): the
-    // lighting's box of `kernelTexels` at every texel centre (techniques/sat_resolve.comp).
-    void techniqueSatResolvePass(const Texture& hi, const Texture& lo, const Texture& dst,
-                                 float kernelTexels);
     const BufferHandle& weightsBuffer(int radius, float sigma);
     void dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction, bool wholeLine);
 

@@ -17,7 +17,7 @@ void setTechniqueParameters(const GlProgram& p, const ShadowEffect& fx) {
     }
 }
 
-// The uniforms of a framework technique's lighting permutation: its parameters as u<Name>,
+// The uniforms of a technique's lighting permutation: its parameters as u<Name>,
 // the sampler units, the map size and the Gaussian weights (PCF uses the moment filter's).
 void setTechniqueUniforms(const GlProgram& p, const ShadowEffect& fx, int unitsUsed) {
     constexpr int kMaxMaps = 16;  // SL_MAX_MAPS in shaders/techniques/common.glsl
@@ -54,7 +54,7 @@ FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, con
 }
 
 void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
-                   const ShadowEffect& fx, bool studentStages, const SceneGeometry& geometry) {
+                   const ShadowEffect& fx, const SceneGeometry& geometry) {
     const int n = fx.mapSize;
     std::vector<const Texture*> colors;
     if (second) colors.push_back(&m.one("second"));
@@ -74,7 +74,7 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
     p.set("uLightEye", m.view.eye);
     p.set("uLightForward", m.view.forward);
     p.set("uDepthRange", m.view.depthRange);
-    if (!studentStages) setTechniqueParameters(p, fx);
+    setTechniqueParameters(p, fx);
     if (second) {
         const auto eps = float(techniqueParameter(fx, "peelEpsilon"));
         p.set("uPeelEpsilon", eps);
@@ -88,7 +88,7 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
 
 void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, const Camera& cam,
                      const std::vector<LightView>& views, ShadowMapSet& maps,
-                     bool studentStages, const SceneGeometry& geometry, Texture& colorTarget,
+                     const SceneGeometry& geometry, Texture& colorTarget,
                      Texture& shadowTarget, Texture& depthTarget) {
     const ShadowEffect& fx = scene.shadow;
     colorTarget = Texture::create(cam.width, cam.height, GL_RGBA32F);
@@ -172,13 +172,9 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
     const Camera& fitted = scene.cameras.front();  // the cascades are fitted to it
     p.set("uCascadeCameraPosition", fitted.position);
     p.set("uCascadeCameraForward", glm::normalize(fitted.target - fitted.position));
-    if (studentStages) {
-        p.setArray("uShadowMaps", units);
-    } else {
-        setTechniqueUniforms(p, fx, unit);
-        p.setArray("uLightSize", lightSize);
-        p.setArray("uSlotFrustumScale", slotFrustum);
-    }
+    setTechniqueUniforms(p, fx, unit);
+    p.setArray("uLightSize", lightSize);
+    p.setArray("uSlotFrustumScale", slotFrustum);
     geometry.draw(p, false, true);
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -27,6 +27,10 @@ std::vector<TechniqueParameter> depthBiasParameters() {
     };
 }
 
+// Rows are listed positionally up to their parameters; `solvesStage`, set on two rows below,
+// is left to its default elsewhere.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 std::vector<TechniqueRow> makeTable() {
     const std::vector<F> any = {F::Gaussian, F::Sat, F::None};
     std::vector<TechniqueRow> t;
@@ -85,24 +89,30 @@ std::vector<TechniqueRow> makeTable() {
                    "visibility v -> clamp(sharpen (v - 1/2) + 1/2)"}}});
     t.push_back({Technique::Msm4, "msm4", "Hamburger 4MSM (the student stages)",
                  "(z, z², z³, z⁴)", 4, 32, {F::Gaussian, F::Sat, F::None}, false, true, false,
-                 false, "msm.glsl", "SL_TECHNIQUE_MSM4", "", {}});
+                 false, "techniques/msm4.glsl", "SL_TECHNIQUE_MSM4", "SL_STORE_MOMENTS4", {}});
     t.push_back({Technique::Msm4Hausdorff, "msm4-hausdorff", "Hausdorff 4MSM (Peters & Klein)",
-                 "(z, z², z³, z⁴)", 4, 32, any, false, false, false, false,
+                 "(z, z², z³, z⁴)", 4, 32, any, false, true, false, false,
                  "techniques/msm4_hausdorff.glsl", "SL_TECHNIQUE_MSM4_HAUSDORFF",
                  "SL_STORE_MOMENTS4", {}});
+    t.back().solvesStage =
+        "its test for the Hausdorff case needs the canonical representation's roots, the msm "
+        "stage's solution";
     t.push_back({Technique::Msm4_16bit, "msm4-16bit", "4MSM, optimised quantised moments",
-                 "4×4-transformed (z, z², z³, z⁴) + offset, UNORM16", 4, 16, any, false, false,
+                 "4×4-transformed (z, z², z³, z⁴) + offset, UNORM16", 4, 16, any, false, true,
                  false, false, "techniques/msm4_16bit.glsl", "SL_TECHNIQUE_MSM4_16BIT",
                  "SL_STORE_MOMENTS4_16BIT",
                  {{"quantizedMomentBias", 6e-5, 0.0, 0.1, false, false,
                    "α for 16-bit moments, toward the bias vector of the quantised case"}}});
     t.push_back({Technique::MsmSoft, "msm-soft", "moment soft shadows (per-pixel SAT kernel)",
-                 "(z, z², z³, z⁴)", 4, 32, {F::Sat}, false, false, false, true,
+                 "(z, z², z³, z⁴)", 4, 32, {F::Sat}, false, true, false, true,
                  "techniques/msm_soft.glsl", "SL_TECHNIQUE_MSM_SOFT", "SL_STORE_MOMENTS4",
                  {{"searchTexels", 32, 2, 256, false, false, "blocker search box, texels"},
                   {"maxKernelTexels", 64, 1, 256, false, false, "largest filter box, texels"}}});
+    t.back().solvesStage =
+        "its blocker search needs the canonical representation's roots, the msm stage's solution";
     return t;
 }
+#pragma GCC diagnostic pop
 
 std::string names(const std::vector<std::string>& items) {
     std::string out;
@@ -195,33 +205,34 @@ MapLayout mapLayout(const ShadowEffect& fx) {
     m.channels = row.channels;
     m.layers = 1;
     if (row.id == Technique::Csm) m.layers = (int(techniqueParameter(fx, "terms")) + 1) / 2;
+    const bool filtered = !row.filterInLighting && fx.filter != FilterKind::None;
     static const unsigned f32[5] = {0, GL_R32F, GL_RG32F, 0, GL_RGBA32F};
     static const char* n32[5] = {"", "R32F", "RG32F", "", "RGBA32F"};
-    m.satFormat = f32[m.channels];
-    m.satFormatName = n32[m.channels];
     if (row.bitsPerChannel == 16) {
         m.glFormat = GL_RGBA16;
         m.formatName = "RGBA16";
+        m.bytesPerTexel = 8;
+    } else if (filtered) {
+        m.glFormat = GL_RGBA32F;
+        m.formatName = "RGBA32F";
+        m.bytesPerTexel = 16;
     } else {
-        m.glFormat = m.satFormat;
-        m.formatName = m.satFormatName;
+        m.glFormat = f32[m.channels];
+        m.formatName = n32[m.channels];
+        m.bytesPerTexel = 4 * m.channels;
     }
-    m.bytesPerTexel = m.channels * row.bitsPerChannel / 8;
     return m;
 }
 
 std::vector<std::string> techniqueDefines(const ShadowEffect& fx) {
     const TechniqueRow& row = techniqueRow(fx.technique);
-    std::vector<std::string> d = {row.define};
-    if (!row.studentStages) {
-        d.push_back(row.storeDefine);
-        d.push_back("SL_MAP_LAYERS=" + std::to_string(mapLayout(fx).layers));
-        for (const auto& p : row.parameters)
-            if (p.compileTime)
-                d.push_back("SL_PARAM_" + p.name + "=" +
-                            std::to_string(int(techniqueParameter(fx, p.name))));
-        if (fx.filter == FilterKind::Gaussian) d.push_back("SL_FILTER_GAUSSIAN");
-    }
+    std::vector<std::string> d = {row.define, row.storeDefine,
+                                  "SL_MAP_LAYERS=" + std::to_string(mapLayout(fx).layers)};
+    for (const auto& p : row.parameters)
+        if (p.compileTime)
+            d.push_back("SL_PARAM_" + p.name + "=" + std::to_string(int(techniqueParameter(fx, p.name))));
+    if (row.msmStage) d.push_back("SL_STAGE_MSM");
+    if (fx.filter == FilterKind::Gaussian) d.push_back("SL_FILTER_GAUSSIAN");
     if (fx.filter == FilterKind::Sat) d.push_back("SL_FILTER_SAT");
     return d;
 }

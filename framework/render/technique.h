@@ -1,7 +1,9 @@
 // Technique table: every shadow technique of the kit as one row — what its shadow map stores
 // (format, channels, layers), which filters it allows, the GLSL file of its lighting function,
 // the permutation defines, and its parameters with their defaults. planPasses reads the row;
-// the renderer never branches on a technique's name. The five student stages are the `msm4` row.
+// the renderer never branches on a technique's name. Every row runs on the solution's stage files
+// (relativeDepth, the filters, satBoxAverage, momentShadowIntensity where it reconstructs with
+// Hamburger 4MSM); the assignment itself is the `msm4` row.
 // (docs/techniques.md explains each row; the enum `Technique` in scene.h is in the table's order.)
 #pragma once
 
@@ -35,13 +37,16 @@ struct TechniqueRow {
     int bitsPerChannel = 32;      // 16: UNORM16, 32: float
     std::vector<FilterKind> filters;  // allowed; the first is the default
     bool filterInLighting = false;    // the kernel is evaluated by the lighting pass (PCF)
-    bool studentStages = false;       // msm4: the student's five stage files run
+    bool msmStage = false;            // G comes from the solution's msm.glsl (SL_STAGE_MSM)
     bool secondDepth = false;         // a second (peeling) shadow pass stores the midpoint
     bool blockerSearch = false;       // the lighting pass searches blockers first (PCSS, msm-soft)
     std::string lightingFile;         // the file defining its shadowIntensity... function
     std::string define;               // SL_TECHNIQUE_<NAME>
     std::string storeDefine;          // what shaders/techniques/store.frag writes
     std::vector<TechniqueParameter> parameters;
+    // Not empty: the row's own files solve a stage (why, in words), so the student kit leaves
+    // them out and shows the row's reference image instead of rendering it.
+    std::string solvesStage;
 };
 
 // All rows, in the order of the enum.
@@ -57,15 +62,15 @@ double techniqueParameter(const ShadowEffect& fx, const std::string& name);
 // Every parameter of the row with its value, in the row's order.
 std::vector<std::pair<std::string, double>> resolvedParameters(const ShadowEffect& fx);
 
-// The shadow map of one light under this effect.
+// The shadow map of one light under this effect. A map that a filter stage reads is RGBA32F,
+// the stage contract's format (VSM's and EVSM2's two channels then fill half of it); a 16-bit
+// map stays RGBA16 and is widened to RGBA32F for its filter (pass_plan.h, PassKind::Widen).
 struct MapLayout {
     unsigned glFormat = 0;      // GL internal format of one layer (GL_R32F, GL_RGBA16, ...)
     std::string formatName;     // "R32F", "RG32F", "RGBA32F", "RGBA16"
-    int channels = 0;           // per layer
+    int channels = 0;           // per layer, that the technique uses
     int layers = 0;             // textures (CSM: ceil(M / 2); others 1)
     int bytesPerTexel = 0;      // per layer
-    unsigned satFormat = 0;     // float32 format with the same channel count (the SAT's)
-    std::string satFormatName;
 };
 MapLayout mapLayout(const ShadowEffect& fx);
 
@@ -79,8 +84,8 @@ glm::dvec4 dequantizeMoments16(const glm::dvec4& q);
 // evsm: the warp exponents as the shaders clamp them (e^{2c} stays finite in float32).
 double clampedWarpExponent(double c);
 
-// The permutation defines of the shadow, filter and lighting programs. For msm4 exactly
-// {"SL_TECHNIQUE_MSM4"} (+ "SL_FILTER_SAT"), as before the table, so its programs are unchanged.
+// The permutation defines of the shadow and lighting programs: the row's technique and store
+// defines, the map's layers, compile-time parameters, SL_STAGE_MSM and the filter's.
 std::vector<std::string> techniqueDefines(const ShadowEffect& fx);
 
 // Scene loading: checks the technique against its filter and parameters, fills the row's

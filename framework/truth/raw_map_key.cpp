@@ -67,8 +67,7 @@ RawMapKey rawMapKey(const Scene& scene, const PassPlan& plan, int light,
     const TechniqueRow& row = techniqueRow(fx.technique);
     const MapLayout layout = mapLayout(fx);
     RawMapKey key;
-    const std::string what = row.studentStages ? "moments (stages)"
-                             : row.storeDefine.rfind("SL_STORE_", 0) == 0
+    const std::string what = row.storeDefine.rfind("SL_STORE_", 0) == 0
                                  ? row.storeDefine.substr(9) : row.storeDefine;
     key.label = what + " " + layout.formatName + (layout.layers > 1 ? "×" + std::to_string(layout.layers) : "") +
                 " " + std::to_string(fx.mapSize) + "² L" + std::to_string(light);
@@ -77,7 +76,7 @@ RawMapKey rawMapKey(const Scene& scene, const PassPlan& plan, int light,
         return key;
     }
     // The shadow pass's program, as render/pass_programs.cpp builds it.
-    const std::string fragment = row.studentStages ? "shadow_moments.frag" : "techniques/store.frag";
+    const std::string fragment = "techniques/store.frag";
     const std::string program = compiledText(library.assemble("scene.vert", plan.defines), plan.defines) +
                                 "\n--- " + fragment + "\n" +
                                 compiledText(library.assemble(fragment, plan.defines), plan.defines);

@@ -1,14 +1,9 @@
-// techniques/common.glsl: what the framework's technique files share (every technique but the
-// student's msm4): relative depth, the query a lighting function answers, the shadow-map
-// array, filtered reads (bilinear, or a box from the double-float SAT), the receiver's bias,
-// and the geometry of a penumbra. Included by lighting.frag and the probe shader.
+// techniques/common.glsl: what the technique files share: the query a lighting function
+// answers, the shadow-map array, filtered reads (bilinear, or a box from the solution's SAT
+// through its satBoxAverage), the receiver's bias, and the geometry of a penumbra. Relative
+// depth is the solution's relativeDepth (moments.glsl). Included by lighting.frag and the
+// probe shader.
 #define SL_MAX_MAPS 16
-
-// Same definition as the stage contract's relativeDepth (moments.glsl), owned by the framework
-// so that other techniques never run a student's stub.
-float techniqueRelativeDepth(float lightDepth, vec2 depthRange) {
-    return clamp((lightDepth - depthRange.x) / (depthRange.y - depthRange.x), 0.0, 1.0);
-}
 
 // What the lighting pass knows about a receiver, in the light's shadow map.
 struct ShadowQuery {
@@ -54,41 +49,15 @@ float mapDepth(int map, ivec2 t) {
 }
 
 #ifdef SL_FILTER_SAT
-// The double-float SAT (hi + lo, filter_sat.comp) at index t; 0 left of or below the map.
-dvec4 satAt(int map, int layer, ivec2 t) {
-    if (t.x < 0 || t.y < 0) return dvec4(0.0);
-    t = min(t, ivec2(uMapTexels) - 1);
-    return dvec4(texelFetch(uShadowMaps[map + 2 * layer], t, 0)) +
-           dvec4(texelFetch(uShadowMaps[map + 2 * layer + 1], t, 0));
-}
-// Sum of the texels left of and below edge e (texel units): the table bilinearly
-// interpolated at index e - 1, as the stage contract's sat_lookup.glsl defines it.
-dvec4 satEdge(int map, int layer, vec2 e) {
-    dvec2 x = dvec2(e) - 1.0;
-    ivec2 i = ivec2(floor(x));
-    dvec2 f = x - dvec2(i);
-    dvec4 a = mix(satAt(map, layer, i), satAt(map, layer, i + ivec2(1, 0)), f.x);
-    dvec4 b = mix(satAt(map, layer, i + ivec2(0, 1)), satAt(map, layer, i + ivec2(1, 1)), f.x);
-    return mix(a, b, f.y);
-}
-// Mean of the map over a box (texel units), clipped to the map; partial texels by coverage.
-vec4 boxAverage(int map, int layer, vec2 center, vec2 boxTexels) {
-    vec2 lo = clamp(center - 0.5 * boxTexels, vec2(0.0), uMapTexels);
-    vec2 hi = clamp(center + 0.5 * boxTexels, vec2(0.0), uMapTexels);
-    double area = double(hi.x - lo.x) * double(hi.y - lo.y);
-    if (area <= 0.0) return texelFetch(uShadowMaps[map + 2 * layer], ivec2(center), 0);
-    dvec4 s = satEdge(map, layer, hi) - satEdge(map, layer, vec2(lo.x, hi.y)) -
-              satEdge(map, layer, vec2(hi.x, lo.y)) + satEdge(map, layer, lo);
-    return vec4(s / area);
-}
 uniform float uSatKernel;  // the scene's box width, texels
 #endif
 
-// The filtered map at the receiver: the SAT's box of the scene's width, or a bilinear read
-// of the (Gaussian-filtered or raw) map.
+// The filtered map at the receiver: the box of the scene's width from the layer's summed-area
+// table (the solution's sat.comp and satBoxAverage), or a bilinear read of the
+// (Gaussian-filtered or raw) map.
 vec4 filteredMap(int map, int layer, vec2 uv) {
 #ifdef SL_FILTER_SAT
-    return boxAverage(map, layer, uv * uMapTexels, vec2(uSatKernel));
+    return satBoxAverage(uShadowMaps[map + layer], uv * uMapTexels, vec2(uSatKernel));
 #else
     return texture(uShadowMaps[map + layer], uv);
 #endif

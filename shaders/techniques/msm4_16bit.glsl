@@ -2,12 +2,14 @@
 // quantization"). Raw moments (z, z², z³, z⁴) are nearly collinear, so quantising each to 16
 // bits destroys the differences the Cholesky solve needs. A fixed 4×4 transform Θ (and an offset
 // on the first row) spreads them over [0, 1]⁴ before storage in RGBA16 (UNORM): half the memory
-// of RGBA32F. Lighting undoes it (Θ⁻¹), then runs Hamburger 4MSM with
-//   α = quantizedMomentBias (≈ 6·10⁻⁵: the quantisation error is larger than float32's), and
-//   the bias vector (½, ⅓, ¼, ⅕), the moments of the uniform distribution on [0, 1]: unlike
-//   (½, ½, ½, ½) (two points, a singular Hankel matrix) it is strictly positive definite, so
-//   any α > 0 moves a quantised, slightly invalid vector back inside.
-#include "techniques/msm_hamburger.glsl"
+// of RGBA32F. A filter reads the map widened to RGBA32F (the stage contract's format), so the
+// filtered moments keep float32 precision. Lighting undoes Θ (Θ⁻¹), biases the moments by
+//   α = quantizedMomentBias (≈ 6·10⁻⁵: the quantisation error is larger than float32's) toward
+//   (½, ⅓, ¼, ⅕), the moments of the uniform distribution on [0, 1]: unlike (½, ½, ½, ½) (two
+//   points, a singular Hankel matrix) it is strictly positive definite, so any α > 0 moves a
+//   quantised, slightly invalid vector back inside;
+// then hands them to the solution's momentShadowIntensity (msm.glsl), which adds its own
+// float32 bias uMomentBias toward (½, ½, ½, ½).
 
 // q = Θ b + (0.035955884801, 0, 0, 0); columns of the mat4 are the rows of Peters' table.
 vec4 msmQuantize16(vec4 b) {
@@ -30,9 +32,12 @@ vec4 msmDequantize16(vec4 q) {
 uniform float uQuantizedMomentBias;
 #endif
 
+#ifdef SL_STAGE_MSM
 float msm4QuantizedShadowIntensity(vec4 q, float zf, float alpha) {
-    return msmHamburger(msmDequantize16(q), zf, alpha, vec4(0.5, 1.0 / 3.0, 0.25, 0.2));
+    vec4 b = mix(msmDequantize16(q), vec4(0.5, 1.0 / 3.0, 0.25, 0.2), alpha);
+    return momentShadowIntensity(b, zf);
 }
+#endif
 
 #ifndef SL_PROBE
 float shadowIntensityMsm4_16bit(ShadowQuery q) {

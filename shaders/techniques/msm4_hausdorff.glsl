@@ -5,20 +5,17 @@
 // q(z) = z (1 − z)(z − z_f)(z − x) vanishes on the support, so E[q] = 0 gives
 //   x = (−b4 + (1 + z_f) b3 − z_f b2) / (−b3 + (1 + z_f) b2 − z_f b1),
 // and the weights solve the 4×4 Vandermonde system with moments (1, b1, b2, b3). G is the weight
-// in front of z_f: w(0) + [x < z_f] w(x). Bias α toward (½, ½, ½, ½), as the student's msm.glsl.
-#include "techniques/msm_hamburger.glsl"
+// in front of z_f: w(0) + [x < z_f] w(x). Bias α toward (½, ½, ½, ½), as msm.glsl. The
+// Hamburger case is the solution's momentShadowIntensity (msm.glsl, same α); the roots come from
+// techniques/msm_hamburger.glsl, which solves the msm stage: instructor kit only.
 
-#ifndef SL_PROBE
-uniform float uMomentBias;
-#endif
-
-float msm4HausdorffShadowIntensity(vec4 b, float zf, float alpha) {
-    b = mix(b, vec4(0.5), alpha);
+float msm4HausdorffShadowIntensity(vec4 unbiased, float zf, float alpha) {
+    vec4 b = mix(unbiased, vec4(0.5), alpha);
     vec2 z = msmRoots(b, zf);
-    if (z.x >= 0.0 && z.y <= 1.0) return msmHamburgerFromRoots(b, zf, z);
+    if (z.x >= 0.0 && z.y <= 1.0) return momentShadowIntensity(unbiased, zf);
     float den = -b.z + (1.0 + zf) * b.y - zf * b.x;
     float num = -b.w + (1.0 + zf) * b.z - zf * b.y;
-    if (abs(den) < 1e-12) return msmHamburgerFromRoots(b, zf, z);
+    if (abs(den) < 1e-12) return momentShadowIntensity(unbiased, zf);
     float x = clamp(num / den, 0.0, 1.0);
     // Weight of node 0: E[(z − zf)(z − x)(z − 1)] / ((0 − zf)(0 − x)(0 − 1)).
     float e0 = b.z - (zf + x + 1.0) * b.y + (zf * x + zf + x) * b.x - zf * x;

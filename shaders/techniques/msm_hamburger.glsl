@@ -1,7 +1,8 @@
-// techniques/msm_hamburger.glsl: the framework's own Hamburger 4MSM pieces (Peters & Klein
-// 2015), shared by msm4-hausdorff, msm4-16bit and msm-soft. The same algorithm as the stage
-// contract's msm.glsl (which stays the student's): Cholesky of the 3×3 Hankel matrix B of the
-// biased moments, the quadratic c through (1, z_f, z_f²), its roots z2 ≤ z3.
+// techniques/msm_hamburger.glsl: the canonical representation's support points (Peters & Klein
+// 2015), which msm4-hausdorff and msm-soft need beyond G itself: Cholesky of the 3×3 Hankel
+// matrix B of the biased moments, the quadratic c through (1, z_f, z_f²), its roots z2 ≤ z3.
+// It solves the msm stage, so the student kit leaves it (and those two techniques) out; G
+// itself always comes from the solution's momentShadowIntensity (msm.glsl).
 
 // The canonical representation through z_f: roots (z2, z3) of the quadratic, from biased b.
 vec2 msmRoots(vec4 b, float zf) {
@@ -22,25 +23,6 @@ vec2 msmRoots(vec4 b, float zf) {
     float rA = clamp(q / safeZ, -1e10, 1e10);
     float rB = q == 0.0 ? rA : clamp(c.x / safeQ, -1e10, 1e10);
     return vec2(min(rA, rB), max(rA, rB));
-}
-
-// G of Hamburger 4MSM from biased moments: the weight of the support points in front of z_f.
-float msmHamburgerFromRoots(vec4 b, float zf, vec2 z) {
-    float G;
-    if (z.y < zf) {
-        G = 1.0 - (z.x * z.y - b.x * (z.x + z.y) + b.y) / max((zf - z.x) * (zf - z.y), 1e-30);
-    } else if (z.x < zf) {
-        G = (zf * z.y - b.x * (zf + z.y) + b.y) / max((z.y - z.x) * (zf - z.x), 1e-30);
-    } else {
-        G = 0.0;
-    }
-    return clamp(G, 0.0, 1.0);
-}
-
-// Hamburger 4MSM with moment bias α toward `biasVector`.
-float msmHamburger(vec4 b, float zf, float alpha, vec4 biasVector) {
-    b = mix(b, biasVector, alpha);
-    return msmHamburgerFromRoots(b, zf, msmRoots(b, zf));
 }
 
 // Blockers from moments (Peters et al. 2016): the canonical representation through z_f has

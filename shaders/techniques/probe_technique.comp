@@ -1,8 +1,11 @@
 // techniques/probe_technique.comp: evaluates the technique files' functions on arbitrary
 // inputs, with exactly the GLSL the lighting pass compiles (tests/test_technique_mirror.cpp
-// compares them with double-precision CPU mirrors). Case i reads inputs[3i .. 3i+2] = (a, b, c)
+// compares them with double-precision CPU mirrors), on the solution's msm.glsl. Case i reads inputs[3i .. 3i+2] = (a, b, c)
 // and writes outputs[i]; uFunction picks the function (see main).
 #define SL_PROBE
+#define SL_STAGE_MSM
+uniform float uMomentBias;  // msm.glsl's α
+#include "msm.glsl"
 #include "techniques/common.glsl"
 #include "techniques/evsm_common.glsl"
 #include "techniques/msm_hamburger.glsl"
@@ -43,7 +46,7 @@ void main() {
         case 7: r.x = msm4QuantizedShadowIntensity(a, b.x, b.y); break;
         case 8: r.xy = msmBlockers(a, b.x, b.y); break;
         case 9: r = msmQuantize16(a); break;
-        case 10: r.x = msmHamburger(a, b.x, b.y, vec4(0.5)); break;
+        case 10: r.x = momentShadowIntensity(a, b.x); break;  // α = uMomentBias
     }
     outputs[i] = r;
 }

@@ -1,13 +1,17 @@
-// techniques/store.frag: the shadow pass of the framework's techniques (msm4 runs the student's
-// shadow_moments.frag instead). Writes what the technique's row stores, per layer:
+// techniques/store.frag: the shadow pass of every technique. It measures the fragment's distance
+// from the light, takes the solution's relativeDepth (moments.glsl) and writes what the
+// technique's row stores, per layer:
 //   SL_STORE_DEPTH           z                         (hard, pcf, pcss, second-depth: R32F)
 //   SL_STORE_VSM             (z, z²)                   (RG32F)
 //   SL_STORE_EVSM2 / EVSM4   exp-warped moments        (evsm2.glsl / evsm4.glsl)
 //   SL_STORE_CSM             (cos c_k z, sin c_k z)    (csm.glsl, SL_MAP_LAYERS RGBA32F)
-//   SL_STORE_MOMENTS4        (z, z², z³, z⁴)           (RGBA32F)
-//   SL_STORE_MOMENTS4_16BIT  Θ b + offset              (msm4_16bit.glsl, RGBA16)
+//   SL_STORE_MOMENTS4        computeMoments(z)         (moments.glsl; RGBA32F)
+//   SL_STORE_MOMENTS4_16BIT  Θ computeMoments(z) + offset  (msm4_16bit.glsl, RGBA16)
+// A map that a filter stage reads is RGBA32F (VSM and EVSM2 then leave z and w blank).
 // The CPU mirror of the store at z = 1 is the clear value (technique.h shadowClearValues).
 // (Helpers are included unconditionally: includes are once per program, whatever the #if.)
+#include "moments.glsl"
+#undef SL_STAGE_MSM  // the shadow pass reconstructs nothing: no msm.glsl here
 #define SL_PROBE  // the technique files' functions only: no samplers, no uniforms
 #include "techniques/common.glsl"
 #include "techniques/evsm_common.glsl"
@@ -27,12 +31,11 @@ uniform vec2 uDepthRange;
 layout(location = 0) out vec4 outLayers[SL_MAP_LAYERS];
 
 void main() {
-    float z = techniqueRelativeDepth(dot(vWorldPosition - uLightEye, uLightForward), uDepthRange);
-    float z2 = z * z;
+    float z = relativeDepth(dot(vWorldPosition - uLightEye, uLightForward), uDepthRange);
 #if defined(SL_STORE_DEPTH)
     outLayers[0] = vec4(z, 0.0, 0.0, 0.0);
 #elif defined(SL_STORE_VSM)
-    outLayers[0] = vec4(z, z2, 0.0, 0.0);
+    outLayers[0] = vec4(z, z * z, 0.0, 0.0);
 #elif defined(SL_STORE_EVSM2) || defined(SL_STORE_EVSM4)
     float cp = min(uPositiveExponent, 42.0);
     float wp = evsmWarp(z, cp);
@@ -51,8 +54,8 @@ void main() {
                             second ? sin(c2 * z) : 0.0);
     }
 #elif defined(SL_STORE_MOMENTS4)
-    outLayers[0] = vec4(z, z2, z2 * z, z2 * z2);
+    outLayers[0] = computeMoments(z);
 #elif defined(SL_STORE_MOMENTS4_16BIT)
-    outLayers[0] = msmQuantize16(vec4(z, z2, z2 * z, z2 * z2));
+    outLayers[0] = msmQuantize16(computeMoments(z));
 #endif
 }

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sl::cli {
+namespace sl {
 
 void scaleScene(Scene& scene, int size) {
     if (scene.cameras.empty() || size == scene.cameras[0].width) return;
@@ -23,4 +23,4 @@ void scaleScene(Scene& scene, int size) {
     fx.gaussianSigma = float(fx.gaussianSigma * g);
 }
 
-}  // namespace sl::cli
+}  // namespace sl
