@@ -136,7 +136,7 @@ void compareEntry(const std::string& scene, const nlohmann::json& fresh,
         return;
     }
     const auto& old = scenes[scene];
-    if (old.value("scene_sha256", "") != fresh["scene_sha256"])
+    if (old.value("scene_sha256", "") != fresh["scene_sha256"].get<std::string>())
         stale.push_back(scene + ": the scene file changed since its goldens were made");
     for (const auto& [image, e] : fresh["images"].items())
         if (!old["images"].contains(image) || old["images"][image]["sha256"] != e["sha256"])

@@ -3,7 +3,11 @@
 
 #include "mesh.h"
 
+#if SHADOWLAB_EMBREE_MAJOR >= 4
+#include <embree4/rtcore.h>
+#else
 #include <embree3/rtcore.h>
+#endif
 
 #include <limits>
 #include <stdexcept>
@@ -64,8 +68,6 @@ RayScene::~RayScene() = default;
 
 bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, float tnear,
                         float tfar) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRay ray{};
     ray.org_x = origin.x, ray.org_y = origin.y, ray.org_z = origin.z;
     ray.dir_x = direction.x, ray.dir_y = direction.y, ray.dir_z = direction.z;
@@ -74,7 +76,13 @@ bool RayScene::occluded(const glm::vec3& origin, const glm::vec3& direction, flo
     ray.mask = std::numeric_limits<unsigned>::max();
     ray.flags = 0;
     ray.time = 0.0f;
+#if SHADOWLAB_EMBREE_MAJOR >= 4
+    rtcOccluded1(impl_->scene, &ray);  // Embree 4: the context became optional arguments
+#else
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
     rtcOccluded1(impl_->scene, &context, &ray);
+#endif
     return ray.tfar < 0.0f;  // Embree sets tfar = -inf on a hit
 }
 
