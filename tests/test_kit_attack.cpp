@@ -63,14 +63,17 @@ size_t matching(const std::string& s, size_t open) {
     const char o = s[open], c = o == '{' ? '}' : ')';
     int depth = 0;
     for (size_t i = open; i < s.size(); ++i) {
-        if (s[i] == o) ++depth;
-        else if (s[i] == c && --depth == 0) return i;
+        if (s[i] == o)
+            ++depth;
+        else if (s[i] == c && --depth == 0)
+            return i;
     }
     return std::string::npos;
 }
 
 std::string squeeze(const std::string& s) {
-    return std::regex_replace(std::regex_replace(s, std::regex(R"(\s+)"), " "), std::regex(R"(^ | $)"), "");
+    static const std::regex space(R"(\s+)"), ends(R"(^ | $)");
+    return std::regex_replace(std::regex_replace(s, space, " "), ends, "");
 }
 
 bool hasWord(const std::string& text, const std::string& word) {
@@ -100,11 +103,12 @@ struct Function {
 // The GLSL type a C++ or GLSL parameter type matches: qualifiers, glm::, references dropped,
 // double -> float, dvecN -> vecN; an array gets "[]".
 std::string normalType(std::string t) {
-    t = std::regex_replace(t, std::regex(R"(\b(glm|std)::)"), "");
-    t = std::regex_replace(t, std::regex(R"(\b(const|in|out|inout|highp|mediump|lowp|precise|static|inline|constexpr)\b|[&*])"), " ");
-    t = squeeze(t);
+    static const std::regex prefix(R"(\b(glm|std)::)"), dvec(R"(d(vec|mat)[234])");
+    static const std::regex qualifier(
+        R"(\b(const|in|out|inout|highp|mediump|lowp|precise|static|inline|constexpr)\b|[&*])");
+    t = squeeze(std::regex_replace(std::regex_replace(t, prefix, ""), qualifier, " "));
     if (t == "double") return "float";
-    if (std::regex_match(t, std::regex(R"(d(vec|mat)[234])"))) return t.substr(1);
+    if (std::regex_match(t, dvec)) return t.substr(1);
     return t;
 }
 
@@ -113,23 +117,26 @@ std::vector<Param> parseParams(const std::string& list) {
     const std::string l = squeeze(list);
     if (l.empty() || l == "void") return out;
     std::istringstream in(l);
+    static const std::regex defaultValue(R"(=.*$)"), arrayEnd(R"(\]\s*$)"), arraySize(R"(\s*\[[^\]]*\]\s*$)");
     for (std::string p; std::getline(in, p, ',');) {
-        p = squeeze(std::regex_replace(p, std::regex(R"(=.*$)"), ""));  // a C++ default value
-        const bool array = std::regex_search(p, std::regex(R"(\]\s*$)"));
-        p = std::regex_replace(p, std::regex(R"(\s*\[[^\]]*\]\s*$)"), "");
+        p = squeeze(std::regex_replace(p, defaultValue, ""));  // a C++ default value
+        const bool array = std::regex_search(p, arrayEnd);
+        p = std::regex_replace(p, arraySize, "");
         size_t n = p.size();
         while (n > 0 && isIdent(p[n - 1])) --n;
-        if (n == 0) out.push_back({normalType(p) + (array ? "[]" : ""), ""});  // unnamed
-        else out.push_back({normalType(p.substr(0, n)) + (array ? "[]" : ""), p.substr(n)});
+        if (n == 0)
+            out.push_back({normalType(p) + (array ? "[]" : ""), ""});  // unnamed
+        else
+            out.push_back({normalType(p.substr(0, n)) + (array ? "[]" : ""), p.substr(n)});
     }
     return out;
 }
 
 const std::set<std::string>& keywords() {
-    static const std::set<std::string> k = {"if", "for", "while", "switch", "return", "else", "do",
-                                            "case", "new", "delete", "catch", "sizeof", "throw",
-                                            "using", "namespace", "struct", "class", "operator",
-                                            "decltype", "typedef", "template", "TEST", "TEST_F"};
+    static const std::set<std::string> k = {
+        "if",    "for",      "while",    "switch",  "return",   "else",  "do",        "case",
+        "new",   "delete",   "catch",    "sizeof",  "throw",    "using", "namespace", "struct",
+        "class", "operator", "decltype", "typedef", "template", "TEST",  "TEST_F"};
     return k;
 }
 
@@ -140,8 +147,10 @@ std::vector<Function> functions(const std::string& code, bool cpp) {
     std::vector<int> depth(code.size() + 1, 0);
     for (size_t i = 0, d = 0; i < code.size(); ++i) {
         depth[i] = int(d);
-        if (code[i] == '{') ++d;
-        else if (code[i] == '}' && d > 0) --d;
+        if (code[i] == '{')
+            ++d;
+        else if (code[i] == '}' && d > 0)
+            --d;
     }
     size_t skipTo = 0;
     for (size_t open = code.find('('); open != std::string::npos; open = code.find('(', open + 1)) {
@@ -181,9 +190,8 @@ std::vector<Function> functions(const std::string& code, bool cpp) {
         if (b >= code.size() || code[b] != '{') continue;
         const size_t end = matching(code, b);
         if (end == std::string::npos) continue;
-        Function f{normalType(type), name, parseParams(params), typeBegin, end + 1,
-                   code.substr(typeBegin, end + 1 - typeBegin)};
-        out.push_back(f);
+        out.push_back({normalType(type), name, parseParams(params), typeBegin, end + 1,
+                       code.substr(typeBegin, end + 1 - typeBegin)});
         skipTo = end + 1;
     }
     return out;
@@ -224,17 +232,25 @@ std::vector<Global> globals(const std::string& code, bool cpp) {
     std::istringstream in(code);
     size_t pos = 0;
     int depth = 0;
+    static const std::regex define(R"(^\s*#\s*define\s+(\w+))");
+    static const std::regex cppConst(
+        R"(^\s*(?:static\s+|inline\s+)*(?:constexpr|const)\s+(float|double|int)\s+(\w+)\s*=\s*([^;]+);)");
+    static const std::regex glslConst(R"(^\s*const\s+\w+\s+(\w+)\s*(\[[^\]]*\])?\s*=[^;]*;)");
+    static const std::regex uniform(R"(^\s*uniform\s+(?:\w+\s+)*?(\w+)\s*(\[[^\]]*\])?\s*(=[^;]*)?;)");
+    static const std::regex structure(R"(^\s*struct\s+(\w+)\s*\{?)");
     for (std::string line; std::getline(in, line); pos += line.size() + 1) {
         std::smatch m;
-        if (std::regex_search(line, m, std::regex(R"(^\s*#\s*define\s+(\w+))"))) {
+        if (std::regex_search(line, m, define)) {
             if (!cpp) out.push_back({m[1].str(), line, pos});
-        } else if (cpp && outside[pos] && std::regex_search(line, m, std::regex(R"(^\s*(?:static\s+|inline\s+)*(?:constexpr|const)\s+(float|double|int)\s+(\w+)\s*=\s*([^;]+);)"))) {
-            out.push_back({m[2].str(), "const " + normalType(m[1].str()) + " " + m[2].str() + " = " + m[3].str() + ";", pos});
-        } else if (!cpp && depth == 0 && std::regex_search(line, m, std::regex(R"(^\s*const\s+\w+\s+(\w+)\s*(\[[^\]]*\])?\s*=[^;]*;)"))) {
+        } else if (cpp && outside[pos] && std::regex_search(line, m, cppConst)) {
+            const std::string name = m[2].str();
+            out.push_back(
+                {name, "const " + normalType(m[1].str()) + " " + name + " = " + m[3].str() + ";", pos});
+        } else if (!cpp && depth == 0 && std::regex_search(line, m, glslConst)) {
             out.push_back({m[1].str(), line, pos});
-        } else if (!cpp && depth == 0 && std::regex_search(line, m, std::regex(R"(^\s*uniform\s+(?:\w+\s+)*?(\w+)\s*(\[[^\]]*\])?\s*(=[^;]*)?;)"))) {
+        } else if (!cpp && depth == 0 && std::regex_search(line, m, uniform)) {
             out.push_back({m[1].str(), line, pos});
-        } else if (!cpp && depth == 0 && std::regex_search(line, m, std::regex(R"(^\s*struct\s+(\w+)\s*\{?)"))) {
+        } else if (!cpp && depth == 0 && std::regex_search(line, m, structure)) {
             const size_t open = code.find('{', pos);
             const size_t close = open == std::string::npos ? open : matching(code, open);
             const size_t semi = close == std::string::npos ? close : code.find(';', close);
@@ -290,8 +306,8 @@ Source makeSource(const std::string& path, const std::string& text, bool cpp, co
 // Stage targets
 
 struct Target {
-    std::string key;        // the stage function, or the compute stage's file
-    std::string file;       // the stage file it goes into
+    std::string key;   // the stage function, or the compute stage's file
+    std::string file;  // the stage file it goes into
     std::string returnType;
     std::vector<std::string> params;
     std::string scene;
@@ -302,9 +318,18 @@ const std::vector<Target>& targets() {
     static const std::vector<Target> t = {
         {"relativeDepth", "moments.glsl", "float", {"float", "vec2"}, "classic", {"classic: moments"}},
         {"computeMoments", "moments.glsl", "vec4", {"float"}, "classic", {"classic: moments"}},
-        {"momentShadowIntensity", "msm.glsl", "float", {"vec4", "float"}, "classic",
+        {"momentShadowIntensity",
+         "msm.glsl",
+         "float",
+         {"vec4", "float"},
+         "classic",
          {"classic: msm", "hard cases: robustness"}},
-        {"satBoxAverage", "sat_lookup.glsl", "vec4", {"sampler2D", "vec2", "vec2"}, "wide_blur", {"wide_blur: sat"}},
+        {"satBoxAverage",
+         "sat_lookup.glsl",
+         "vec4",
+         {"sampler2D", "vec2", "vec2"},
+         "wide_blur",
+         {"wide_blur: sat"}},
         {"gaussian_blur.comp", "gaussian_blur.comp", "", {}, "classic", {"classic: gaussian"}},
         {"sat.comp", "sat.comp", "", {}, "wide_blur", {"wide_blur: sat"}},
     };
@@ -366,8 +391,10 @@ std::string cppToGlsl(std::string t, const std::string& returnType) {
     t = std::regex_replace(t, std::regex(R"(\bdouble\b)"), "float");
     t = std::regex_replace(t, std::regex(R"(\bd(vec|mat)([234])\b)"), "$1$2");
     const size_t brace = std::min(t.find('{'), t.size());
-    t = std::regex_replace(t.substr(0, brace), std::regex("&"), " ") + t.substr(brace);  // reference parameters
-    static const std::regex foreign(R"(::|\bauto\b|\bstd\b|\bthrow\b|->|\btemplate\b|\[[&=]|\bnullptr\b|\bsizeof\b|"|\bsize_t\b|\bmemcpy\b|\bu?int\d+_t\b|\blong\b)");
+    t = std::regex_replace(t.substr(0, brace), std::regex("&"), " ") +
+        t.substr(brace);  // reference parameters
+    static const std::regex foreign(
+        R"(::|\bauto\b|\bstd\b|\bthrow\b|->|\btemplate\b|\[[&=]|\bnullptr\b|\bsizeof\b|"|\bsize_t\b|\bmemcpy\b|\bu?int\d+_t\b|\blong\b)");
     return std::regex_search(t, foreign) ? "" : t;
 }
 
@@ -451,7 +478,8 @@ std::vector<Paste> pastes(const Function& f, const Source& self, const std::vect
     for (const auto& it : ordered) block += it.text + "\n";
     for (const auto& it : ordered)
         if (it.function)
-            block = std::regex_replace(block, std::regex("\\b" + it.name + "\\b(?=\\s*\\()"), "atk_" + it.name);
+            block =
+                std::regex_replace(block, std::regex("\\b" + it.name + "\\b(?=\\s*\\()"), "atk_" + it.name);
     // Its extra parameters: zeros; the constants a caller in the kit passes; uMomentBias (msm).
     std::vector<std::vector<std::string>> fills;
     std::vector<std::string> zeros;
@@ -512,7 +540,8 @@ std::string withoutHeader(const std::string& text) {
 }
 
 bool matchesTarget(const Function& f, const Target& t) {
-    if (t.returnType.empty() || f.returnType != t.returnType || f.params.size() < t.params.size()) return false;
+    if (t.returnType.empty() || f.returnType != t.returnType || f.params.size() < t.params.size())
+        return false;
     for (size_t i = 0; i < t.params.size(); ++i)
         if (f.params[i].type != t.params[i]) return false;
     return true;
@@ -572,14 +601,15 @@ std::string computeStage(const fs::path& root, const std::string& path, const st
             out += "#define " + img.format + " rgba32f\n";
     std::set<std::string> done;
     std::function<std::string(const std::string&, const std::string&)> inline_ = [&](const std::string& p,
-                                                                                  const std::string& t) {
+                                                                                     const std::string& t) {
         std::string r;
         std::istringstream in(t);
         for (std::string line; std::getline(in, line);) {
             std::smatch m;
             if (std::regex_search(line, m, std::regex(R"re(^\s*#\s*include\s+"([^"]+)")re")) &&
                 !stageFiles().count(m[1].str())) {
-                for (const fs::path& q : {fs::path("shaders") / m[1].str(), fs::path(p).parent_path() / m[1].str()})
+                for (const fs::path& q :
+                     {fs::path("shaders") / m[1].str(), fs::path(p).parent_path() / m[1].str()})
                     if (fs::is_regular_file(root / q)) {
                         const std::string key = q.lexically_normal().generic_string();
                         if (done.insert(key).second) r += inline_(key, test::readFile(root / q));
@@ -609,13 +639,17 @@ std::vector<Hit> patternHits(const std::string& text, bool cpp = false) {
     std::vector<Hit> hits;
     auto excerpt = [&](size_t pos) {
         const size_t b = text.rfind('\n', pos), e = text.find('\n', pos);
-        return squeeze(text.substr(b == std::string::npos ? 0 : b + 1, e == std::string::npos ? std::string::npos : e - (b == std::string::npos ? 0 : b + 1)));
+        return squeeze(text.substr(
+            b == std::string::npos ? 0 : b + 1,
+            e == std::string::npos ? std::string::npos : e - (b == std::string::npos ? 0 : b + 1)));
     };
     // The two Cholesky pivots of the Hankel matrix: b2 - b1², then b4 - b2² (..., within 1000
     // characters), in .xyzw, [0..3] or b1..b4 spelling.
     const std::vector<std::pair<std::string, std::string>> pivots = {
-        {R"(\b(\w+)\s*\.\s*y\s*-\s*\1\s*\.\s*x\s*\*\s*\1\s*\.\s*x\b)", R"(\b@\s*\.\s*w\s*-\s*@\s*\.\s*y\s*\*\s*@\s*\.\s*y\b)"},
-        {R"(\b(\w+)\s*\[\s*1\s*\]\s*-\s*\1\s*\[\s*0\s*\]\s*\*\s*\1\s*\[\s*0\s*\])", R"(\b@\s*\[\s*3\s*\]\s*-\s*@\s*\[\s*1\s*\]\s*\*\s*@\s*\[\s*1\s*\])"},
+        {R"(\b(\w+)\s*\.\s*y\s*-\s*\1\s*\.\s*x\s*\*\s*\1\s*\.\s*x\b)",
+         R"(\b@\s*\.\s*w\s*-\s*@\s*\.\s*y\s*\*\s*@\s*\.\s*y\b)"},
+        {R"(\b(\w+)\s*\[\s*1\s*\]\s*-\s*\1\s*\[\s*0\s*\]\s*\*\s*\1\s*\[\s*0\s*\])",
+         R"(\b@\s*\[\s*3\s*\]\s*-\s*@\s*\[\s*1\s*\]\s*\*\s*@\s*\[\s*1\s*\])"},
         {R"(\b([A-Za-z_]*)2\s*-\s*(?:\1)1\s*\*\s*(?:\1)1\b)", R"(\b@4\s*-\s*@2\s*\*\s*@2\b)"},
     };
     for (const auto& [first, second] : pivots) {
@@ -624,8 +658,8 @@ std::vector<Hit> patternHits(const std::string& text, bool cpp = false) {
             const std::string var = (*it)[1].str();
             const std::string window = text.substr(it->position(0), 1000);
             if (std::regex_search(window, std::regex(std::regex_replace(second, std::regex("@"), var)))) {
-                hits.push_back({"Cholesky pivots of the moments' Hankel matrix", lineOf(text, it->position(0)),
-                                excerpt(it->position(0))});
+                hits.push_back({"Cholesky pivots of the moments' Hankel matrix",
+                                lineOf(text, it->position(0)), excerpt(it->position(0))});
                 break;
             }
         }
@@ -691,14 +725,16 @@ struct Attempt {
 };
 
 // Grades every attempt through the kit's `shadowlab grade --batch` on `scene`; name -> results.
-std::map<std::string, nlohmann::json> gradeAll(const fs::path& kit, const fs::path& work, const std::string& scene,
-                                               const std::vector<Attempt>& attempts, std::string* log) {
+std::map<std::string, nlohmann::json> gradeAll(const fs::path& kit, const fs::path& work,
+                                               const std::string& scene, const std::vector<Attempt>& attempts,
+                                               std::string* log) {
     const fs::path batch = work / ("batch_" + scene), out = work / ("out_" + scene);
     fs::create_directories(batch);
     for (const auto& a : attempts)
         for (const auto& [file, text] : a.files) test::writeFile(batch / a.name / file, text);
-    const auto run = test::runIn(kit, "build/shadowlab grade --batch '" + batch.string() + "' -j 2 --scenes " + scene +
-                                          " --no-report --out '" + out.string() + "'",
+    const auto run = test::runIn(kit,
+                                 "build/shadowlab grade --batch '" + batch.string() + "' -j 2 --scenes " +
+                                     scene + " --no-report --out '" + out.string() + "'",
                                  900, "env -u SHADOWLAB_ROOT -u SHADOWLAB_BUILD");
     *log += run.output;
     std::map<std::string, nlohmann::json> results;
@@ -733,10 +769,12 @@ TEST(KitAttack, PatternsRecogniseTheSolution) {
         return out;
     };
     EXPECT_TRUE(named("reference/msm.glsl").count("Cholesky pivots of the moments' Hankel matrix"));
-    EXPECT_TRUE(named("tests/oracles/msm_float_mirror.h").count("Cholesky pivots of the moments' Hankel matrix"));
+    EXPECT_TRUE(
+        named("tests/oracles/msm_float_mirror.h").count("Cholesky pivots of the moments' Hankel matrix"));
     EXPECT_TRUE(named("reference/moments.glsl").count("the moment powers"));
     EXPECT_TRUE(named("reference/gaussian_blur.comp").count("a loop over uWeights"));
-    EXPECT_TRUE(named("tests/submissions/fragile/naive_sat/sat.comp").count("a running sum stored with imageStore in its loop"));
+    EXPECT_TRUE(named("tests/submissions/fragile/naive_sat/sat.comp")
+                    .count("a running sum stored with imageStore in its loop"));
     EXPECT_EQ(patternHits("vec4 m(float z) { return vec4(z, z * z, z * z * z, z * z * z * z); }").size(), 1u);
     EXPECT_EQ(patternHits("float D = b[1] - b[0] * b[0];\nfloat E = b[3] - b[1] * b[1] - L * L;").size(), 1u);
     for (const char* stub : {"student/moments.glsl", "student/msm.glsl", "student/gaussian_blur.comp",
@@ -783,9 +821,11 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
     auto base = [&](const std::string& key) {
         Files f = stubs;
         if (key == "relativeDepth")
-            f["moments.glsl"] = replaceFunction(f["moments.glsl"], "computeMoments", definitionOf(refMoments, "computeMoments"));
+            f["moments.glsl"] = replaceFunction(f["moments.glsl"], "computeMoments",
+                                                definitionOf(refMoments, "computeMoments"));
         if (key == "computeMoments")
-            f["moments.glsl"] = replaceFunction(f["moments.glsl"], "relativeDepth", definitionOf(refMoments, "relativeDepth"));
+            f["moments.glsl"] = replaceFunction(f["moments.glsl"], "relativeDepth",
+                                                definitionOf(refMoments, "relativeDepth"));
         if (key == "momentShadowIntensity") f["moments.glsl"] = refMoments;
         if (key == "satBoxAverage") f["sat.comp"] = test::readFile(naive / "sat.comp");
         if (key == "sat.comp") f["sat_lookup.glsl"] = test::readFile(naive / "sat_lookup.glsl");
@@ -796,7 +836,8 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
     std::set<std::string> context;
     for (const auto& e : fs::directory_iterator(kit / "shaders"))
         if (e.is_regular_file())
-            for (const auto& g : globals(stripComments(test::readFile(e.path())), false)) context.insert(g.name);
+            for (const auto& g : globals(stripComments(test::readFile(e.path())), false))
+                context.insert(g.name);
 
     // The kit's sources: GLSL files, Markdown code blocks, C++.
     std::map<std::string, Source> sources;
@@ -860,11 +901,13 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
         for (const auto& f : s.fns)
             for (const auto& t : targets()) {
                 if (!matchesTarget(f, t)) continue;
-                for (const auto& p : pastes(f, s, scope, s.cpp || control ? std::vector<const Source*>{} : library,
-                                            t, context, calls[f.name])) {
+                for (const auto& p :
+                     pastes(f, s, scope, s.cpp || control ? std::vector<const Source*>{} : library, t,
+                            context, calls[f.name])) {
                     Files files = base(t.key);
                     files[t.file] = replaceFunction(files[t.file], t.key, p.text);
-                    if (!seenTexts.insert(t.key + "\n" + squeeze(withoutHeader(files[t.file]))).second) continue;
+                    if (!seenTexts.insert(t.key + "\n" + squeeze(withoutHeader(files[t.file]))).second)
+                        continue;
                     attempts.push_back({"", p.what, t.key, control, files});
                 }
             }
@@ -875,15 +918,19 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
         if (!images.count(0) || !images.count(1) || !images.at(0).read || !images.at(1).write) return;
         const std::string key = weightsBuffer(code) ? "gaussian_blur.comp" : "sat.comp";
         Files files = base(key);
-        files[key] = "// KitAttack: " + path + " as " + key + "\n" + computeStage(control ? root : kit, path, text);
+        files[key] =
+            "// KitAttack: " + path + " as " + key + "\n" + computeStage(control ? root : kit, path, text);
         if (!seenTexts.insert(key + "\n" + squeeze(withoutHeader(files[key]))).second) return;
         attempts.push_back({"", path + " as " + key, key, control, files});
     };
     // Controls: the solution's own stage functions and filters, through the same extraction.
     std::vector<Source> controlSources;
-    for (const char* rel : {"reference/moments.glsl", "reference/msm.glsl", "tests/submissions/fragile/naive_sat/sat_lookup.glsl"})
+    for (const char* rel : {"reference/moments.glsl", "reference/msm.glsl",
+                            "tests/submissions/fragile/naive_sat/sat_lookup.glsl"})
         controlSources.push_back(makeSource(rel, test::readFile(root / rel), false, root));
-    controlSources.push_back(makeSource("tests/oracles/msm_float_mirror.h", test::readFile(root / "tests/oracles/msm_float_mirror.h"), true, root));
+    controlSources.push_back(makeSource("tests/oracles/msm_float_mirror.h",
+                                        test::readFile(root / "tests/oracles/msm_float_mirror.h"), true,
+                                        root));
     for (const auto& s : controlSources) addFunctionAttempts(s, {&s}, true);
     for (const char* rel : {"reference/gaussian_blur.comp", "tests/submissions/fragile/naive_sat/sat.comp"})
         addComputeAttempt(rel, test::readFile(root / rel), true);
@@ -898,8 +945,11 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
     // Baselines: the stub, with the same counterparts.
     for (const auto& t : targets()) attempts.push_back({"", "the stub", t.key, false, base(t.key)});
     for (size_t i = 0; i < attempts.size(); ++i)
-        attempts[i].name = (i < controls ? "control" : attempts[i].what == "the stub" ? "stub" : "attack") +
-                           std::to_string(i) + "_" + std::regex_replace(attempts[i].target, std::regex("\\."), "_");
+        attempts[i].name = (i < controls                     ? "control"
+                            : attempts[i].what == "the stub" ? "stub"
+                                                             : "attack") +
+                           std::to_string(i) + "_" +
+                           std::regex_replace(attempts[i].target, std::regex("\\."), "_");
 
     std::map<std::string, std::vector<Attempt>> byScene;
     for (const auto& a : attempts) byScene[target(a.target).scene].push_back(a);
@@ -932,10 +982,12 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
               << (failed ? "  [does not compile]" : "") << "\n";
         if (a.control)
             EXPECT_TRUE(above) << "control " << a.what << " should score above the stub:" << scores << "\n"
-                               << first << "\n" << a.files.at(t.file);
+                               << first << "\n"
+                               << a.files.at(t.file);
         else
-            EXPECT_FALSE(above) << "the student kit leaks " << t.key << ": " << a.what << " scores above the stub:"
-                                << scores << "\n" << a.files.at(t.file);
+            EXPECT_FALSE(above) << "the student kit leaks " << t.key << ": " << a.what
+                                << " scores above the stub:" << scores << "\n"
+                                << a.files.at(t.file);
     }
     std::cout << "KitAttack: " << scannedGlsl << " GLSL sources, " << scannedCpp << " C++ files; " << attacked
               << " attacks, " << controls << " controls, graded in "
