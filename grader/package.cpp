@@ -1,7 +1,7 @@
 // package: copies the chosen parts of the repository into a scratch folder and archives it
 // with the system's tar or zip (an instructor's tool: it runs nothing from submissions).
-// What the student kit leaves out and rewrites is student_kit.h; the Gradescope zip's two
-// scripts are here (docs/grading.md, "Packaging" and "Gradescope").
+// What the student kit holds (grader/student_kit.manifest) and rewrites is student_kit.h; the
+// Gradescope zip's two scripts are here (docs/grading.md, "Packaging" and "Gradescope").
 #include "package.h"
 
 #include "paths.h"
@@ -14,7 +14,6 @@
 #include <vector>
 #include <fstream>
 #include <iterator>
-#include <set>
 #include <stdexcept>
 
 namespace sl::grader {
@@ -55,39 +54,39 @@ build/shadowlab grade --submission "$AG/submission" --out "$AG/results" \
 exit 0  # a low score is not a failed autograder: results.json says everything
 )SH";
 
-// The kit's own top-level entries (an allow-list: build/, out/, .git and the like stay out).
-bool excluded(const fs::path& rel, bool student, const std::set<std::string>& droppedTests) {
+// The Gradescope zip: the kit's own top-level entries (an allow-list: build/, out/, .git and the
+// like stay out), everything below them.
+void copyTree(const fs::path& root, const fs::path& dest) {
     static const std::vector<std::string> kit = {"CMakeLists.txt", "CMakePresets.json", "README.md",
                                                  "kit", "docs", "framework", "grader", "scenes",
                                                  "shaders", "student", "tests", "reference"};
-    const std::string first = rel.begin()->string();
-    if (std::find(kit.begin(), kit.end(), first) == kit.end()) return true;
-    return student && leftOutOfStudentKit(rel.generic_string(), droppedTests);
-}
-
-void copyTree(const fs::path& root, const fs::path& dest, bool student) {
-    const std::set<std::string> droppedTests = student ? studentKitDroppedTests(root) : std::set<std::string>{};
     fs::create_directories(dest);
     for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
         const fs::path rel = fs::relative(it->path(), root);
-        if (excluded(rel, student, droppedTests)) {
+        if (std::find(kit.begin(), kit.end(), rel.begin()->string()) == kit.end()) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }
         if (it->is_symlink()) continue;
-        if (it->is_directory()) {
-            fs::create_directories(dest / rel);
-        } else if (it->is_regular_file()) {
-            fs::copy_file(it->path(), dest / rel);
-            if (student && rel.extension() == ".md") {  // the student variant of each doc
-                std::ifstream in(it->path(), std::ios::binary);
-                const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-                std::ofstream(dest / rel, std::ios::trunc | std::ios::binary) << studentMarkdown(text);
-            }
+        if (it->is_directory()) fs::create_directories(dest / rel);
+        else if (it->is_regular_file()) fs::copy_file(it->path(), dest / rel);
+    }
+}
+
+// The student kit: the files grader/student_kit.manifest names (studentKitFiles), each .md as
+// its student variant, and the exact 4MSM's table in place of its solver.
+void copyStudentKit(const fs::path& root, const fs::path& dest) {
+    for (const auto& rel : studentKitFiles(root)) {
+        fs::create_directories((dest / rel).parent_path());
+        fs::copy_file(root / rel, dest / rel);
+        if (fs::path(rel).extension() == ".md") {
+            std::ifstream in(root / rel, std::ios::binary);
+            const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            std::ofstream(dest / rel, std::ios::trunc | std::ios::binary) << studentMarkdown(text);
         }
     }
-    if (student)  // the exact 4MSM's values for the catalogue, without the solver
-        std::ofstream(dest / "framework/numerics/msm_exact_table.cpp") << msmExactTableSource();
+    fs::create_directories(dest / "framework/numerics");
+    std::ofstream(dest / "framework/numerics/msm_exact_table.cpp") << msmExactTableSource();
 }
 
 void run(const std::string& command) {
@@ -112,10 +111,10 @@ std::string makePackage(const std::string& kind, const fs::path& outArg) {
     fs::create_directories(out.parent_path());
     fs::remove(out, ec);
     if (kind == "student") {
-        copyTree(root, scratch / "shadowlab", true);
+        copyStudentKit(root, scratch / "shadowlab");
         run("tar -czf " + quote(out) + " -C " + quote(scratch) + " shadowlab");
     } else if (kind == "gradescope") {
-        copyTree(root, scratch / "source", false);
+        copyTree(root, scratch / "source");
         std::ofstream(scratch / "setup.sh") << kSetup;
         std::ofstream(scratch / "run_autograder") << kRun;
         fs::permissions(scratch / "setup.sh", fs::perms::owner_all | fs::perms::group_read | fs::perms::others_read);

@@ -1,4 +1,4 @@
-// student_kit: the student kit's exclusions and rewrites (see the header).
+// student_kit: the student kit's manifest and rewrites (see the header).
 #include "student_kit.h"
 
 #include "probe_cases.h"
@@ -8,7 +8,8 @@
 #include <cstring>
 #include <fstream>
 #include <map>
-#include <regex>
+#include <set>
+#include <stdexcept>
 #include <sstream>
 #include <vector>
 
@@ -45,46 +46,54 @@ std::string literal(double v) {
 
 }  // namespace
 
-bool leftOutOfStudentKit(const std::string& rel, const std::set<std::string>& droppedTests) {
-    for (const char* dir : {"reference", "tests/oracles", "tests/submissions", "scenes/hidden"})
-        if (rel == dir || startsWith(rel, std::string(dir) + "/")) return true;
-    if (startsWith(rel, "framework/numerics/msm_exact.") && rel != "framework/numerics/msm_exact.h")
-        return true;
-    return rel == "docs/catalogue.md" || rel == "docs/performance_log.md" || droppedTests.count(rel) > 0;
+std::vector<std::string> studentKitManifest(const fs::path& root) {
+    const fs::path file = root / kStudentKitManifest;
+    std::ifstream in(file);
+    if (!in) throw std::runtime_error("no student kit manifest: " + file.string());
+    std::vector<std::string> entries;
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+        ++number;
+        line = line.substr(0, line.find('#'));
+        const size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos) continue;
+        line = line.substr(first, line.find_last_not_of(" \t\r") + 1 - first);
+        while (line.size() > 1 && line.back() == '/') line.pop_back();
+        const fs::path p(line);
+        bool climbs = false;
+        for (const auto& part : p) climbs = climbs || part == "..";
+        if (p.is_absolute() || climbs || line == ".")
+            throw std::runtime_error(file.string() + ":" + std::to_string(number) +
+                                     ": not a path inside the kit: " + line);
+        entries.push_back(line);
+    }
+    return entries;
 }
 
-std::set<std::string> studentKitDroppedTests(const fs::path& root) {
-    // File name -> its text, for the test sources and headers at the top of tests/.
-    std::map<std::string, std::string> files;
-    for (const auto& e : fs::directory_iterator(root / "tests"))
-        if (e.is_regular_file() && (e.path().extension() == ".cpp" || e.path().extension() == ".h"))
-            files[e.path().filename().string()] = readText(e.path());
-    std::set<std::string> dropped;
-    for (const auto& [name, text] : files)
-        if (text.find("oracles/") != std::string::npos || text.find("msm_exact") != std::string::npos ||
-            text.find("submissions") != std::string::npos)
-            dropped.insert(name);
-    // Quoted includes, one per line (a comment may quote `#include "` too).
-    static const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)")re");
-    std::map<std::string, std::vector<std::string>> includes;
-    for (const auto& [name, text] : files) {
-        std::istringstream in(text);
-        std::smatch m;
-        for (std::string line; std::getline(in, line);)
-            if (std::regex_search(line, m, include)) includes[name].push_back(m[1].str());
+bool neverInStudentKit(const std::string& rel) {
+    for (const char* dir : {"reference", "tests/oracles", "tests/submissions", "scenes/hidden"})
+        if (rel == dir || startsWith(rel, std::string(dir) + "/")) return true;
+    return rel == "framework/numerics/msm_exact.cpp";
+}
+
+std::vector<std::string> studentKitFiles(const fs::path& root) {
+    std::set<std::string> files;
+    for (const auto& entry : studentKitManifest(root)) {
+        const fs::path p = root / entry;
+        if (fs::is_symlink(p)) continue;
+        if (fs::is_regular_file(p)) {
+            files.insert(entry);
+        } else if (fs::is_directory(p)) {
+            for (auto it = fs::recursive_directory_iterator(p); it != fs::recursive_directory_iterator(); ++it)
+                if (!it->is_symlink() && it->is_regular_file())
+                    files.insert(fs::relative(it->path(), root).generic_string());
+        }
     }
-    for (bool grew = true; grew;) {  // a file that includes a dropped one is dropped too
-        grew = false;
-        for (const auto& [name, incs] : includes)
-            for (const auto& inc : incs)
-                if (!dropped.count(name) && dropped.count(inc)) {
-                    dropped.insert(name);
-                    grew = true;
-                }
-    }
-    std::set<std::string> rel;
-    for (const auto& name : dropped) rel.insert("tests/" + name);
-    return rel;
+    for (const auto& f : files)
+        if (neverInStudentKit(f))
+            throw std::runtime_error(std::string(kStudentKitManifest) + " puts " + f +
+                                     " in the student kit, which must never hold it");
+    return {files.begin(), files.end()};
 }
 
 std::string studentMarkdown(const std::string& markdown) {

@@ -68,6 +68,34 @@ inline CommandResult runIn(const fs::path& dir, const std::string& command, int 
                       std::to_string(seconds) + " bash -c " + quoted + " </dev/null");
 }
 
+// The student kit as a student gets it: `shadowlab package --kind student` into
+// dir/shadowlab-student.tar.gz, unpacked in dir (its one top folder: dir/shadowlab).
+struct UnpackedKit {
+    fs::path tarball, root;            // root: dir/shadowlab
+    std::vector<std::string> entries;  // the tarball's entries, as `tar tzf` lists them
+    std::string error;                 // "" when packing and unpacking worked, else why not
+};
+inline UnpackedKit unpackStudentKit(const fs::path& dir) {
+    UnpackedKit k{dir / "shadowlab-student.tar.gz", dir / "shadowlab", {}, ""};
+    const auto pack = runCommand(shadowlabBinary() + " package --kind student --out '" + k.tarball.string() + "'");
+    if (pack.exitCode != 0) {
+        k.error = "package: exit " + std::to_string(pack.exitCode) + "\n" + pack.output;
+        return k;
+    }
+    std::istringstream list(runCommand("tar tzf '" + k.tarball.string() + "'").output);
+    for (std::string l; std::getline(list, l);) k.entries.push_back(l);
+    const auto untar = runCommand("tar xzf '" + k.tarball.string() + "' -C '" + dir.string() + "'");
+    if (untar.exitCode != 0) k.error = "tar xzf: " + untar.output;
+    return k;
+}
+
+// Builds the kit's `shadowlab` program in kit/build as `./kit demo` does (ccache makes the
+// compiles hits when this build used it).
+inline CommandResult buildKitProgram(const fs::path& kit) {
+    return runIn(kit, "cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null && "
+                      "cmake --build build --target shadowlab", 900);
+}
+
 // How the kit's tests run a documented command line: as written, except
 //  - `./kit test` where `skipKitTest` (it is the command running this test),
 //  - `./kit deps --check` (it traces a whole build, minutes; .ci/run runs it after the suite),

@@ -6,6 +6,7 @@
 # A name no longer in the suite is ignored.
 set(longest_tests
   KitStudent.TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand 66
+  KitAttack.NoShippedFunctionOrShaderScoresAsAStage 50
   CatalogueGrade.MutantsLoseOnlyOnTheirStageAlternativesScoreFull 66
   ReadmeCommands.EveryReadmeAndHandoutCommandRunsAsWritten 56
   HostileTimeouts.TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated 18

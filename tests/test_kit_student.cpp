@@ -1,10 +1,13 @@
-// The student kit as a student gets it (issue 7 §3, §6): `shadowlab package --kind student`,
-// unpacked into its `shadowlab/` folder, holds no solution-bearing file, builds, and runs every
-// command line its own README and handout show. Slow (a build of the kit; ccache makes the
+// The student kit as a student gets it (issue 7 §3, §6; issue 20 §3): `shadowlab package --kind
+// student`, unpacked into its `shadowlab/` folder, holds exactly what grader/student_kit.manifest
+// names and no solution-bearing file, builds, and runs every command line its own README and
+// handout show. (KitAttack.* tries what it holds as stages.) Slow (a build of the kit; ccache makes the
 // compiles hits when this build used it): see docs/grading.md for the measured time.
 #include "kit_test_support.h"
+#include "student_kit.h"
 
 #include <chrono>
+#include <set>
 
 namespace sl {
 namespace {
@@ -41,20 +44,79 @@ TEST(KitStudent, SolutionBearingPathsAreRecognised) {
     EXPECT_EQ(found.size(), 6u) << testing::PrintToString(found);
 }
 
+// The manifest's format: files and folders, comments, missing entries skipped; nothing outside
+// the kit; a folder entry that reaches a path no student kit may hold stops the packing.
+TEST(KitStudent, ManifestNamesFilesAndFoldersAndNothingElse) {
+    const fs::path root = test::tempDir("student_kit_manifest");
+    for (const char* f : {"kit", "docs/a.md", "docs/images/x.png", "shaders/keep.glsl", "shaders/leak.glsl",
+                          "reference/msm.glsl"})
+        test::writeFile(root / f, "x");
+    test::writeFile(root / grader::kStudentKitManifest,
+                    "# comment\n\nkit\n  docs/   # a folder\nshaders/keep.glsl\nshaders/gone.glsl\n");
+    EXPECT_EQ(grader::studentKitManifest(root),
+              (std::vector<std::string>{"kit", "docs", "shaders/keep.glsl", "shaders/gone.glsl"}));
+    EXPECT_EQ(grader::studentKitFiles(root),
+              (std::vector<std::string>{"docs/a.md", "docs/images/x.png", "kit", "shaders/keep.glsl"}));
+    for (const char* bad : {"../outside\n", "/etc/passwd\n", "docs/../../x\n"}) {
+        test::writeFile(root / grader::kStudentKitManifest, bad);
+        EXPECT_THROW(grader::studentKitManifest(root), std::runtime_error) << bad;
+    }
+    test::writeFile(root / grader::kStudentKitManifest, "kit\nreference\n");
+    EXPECT_THROW(grader::studentKitFiles(root), std::runtime_error);
+    fs::remove(root / grader::kStudentKitManifest);
+    EXPECT_THROW(grader::studentKitFiles(root), std::runtime_error);
+}
+
+// The tests the manifest ships need only what the kit holds: none names the oracles, the exact
+// solver or the submissions, and none includes a test file the manifest leaves out (the kit's
+// `./kit test` would not compile). The old rule found these by their text; now they are named.
+TEST(KitStudent, ManifestTestsNeedOnlyWhatTheKitHolds) {
+    const auto files = grader::studentKitFiles(test::root());
+    const std::set<std::string> kit(files.begin(), files.end());
+    std::vector<std::string> shadowlabPaths;
+    for (const auto& f : files) shadowlabPaths.push_back("shadowlab/" + f);
+    EXPECT_TRUE(solutionBearing(shadowlabPaths).empty()) << testing::PrintToString(solutionBearing(shadowlabPaths));
+    static const std::regex include(R"re(^\s*#\s*include\s+"([^"]+)")re");
+    int tests = 0;
+    for (const auto& f : files) {
+        const fs::path p(f);
+        if (p.parent_path() != "tests" || (p.extension() != ".cpp" && p.extension() != ".h")) continue;
+        ++tests;
+        const std::string text = test::readFile(test::root() / f);
+        for (const char* word : {"oracles/", "msm_exact", "submissions"})
+            EXPECT_EQ(text.find(word), std::string::npos) << f << " names " << word;
+        for (const auto& line : lines(text)) {
+            std::smatch m;
+            if (!std::regex_search(line, m, include)) continue;
+            const std::string inc = m[1].str();
+            if (fs::exists(test::root() / "tests" / inc))
+                EXPECT_TRUE(kit.count("tests/" + inc)) << f << " includes " << inc << ", which the kit leaves out";
+        }
+    }
+    EXPECT_GT(tests, 20);
+    // The two tests that check the kit, and what they compare with, stay out of it.
+    for (const char* f : {"tests/test_kit_student.cpp", "tests/test_kit_attack.cpp", "tests/test_grader_support.h"})
+        EXPECT_FALSE(kit.count(f)) << f;
+}
+
 TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
     using Clock = std::chrono::steady_clock;
-    const fs::path dir = test::tempDir("student_kit");
-    const fs::path tarball = dir / "shadowlab-student.tar.gz";
-    auto pack = test::runCommand(test::shadowlabBinary() + " package --kind student --out " + tarball.string());
-    ASSERT_EQ(pack.exitCode, 0) << pack.output;
+    const auto unpacked = test::unpackStudentKit(test::tempDir("student_kit"));
+    ASSERT_EQ(unpacked.error, "");
+    const auto& entries = unpacked.entries;
+    const fs::path kit = unpacked.root;
 
-    // Contents: one top folder shadowlab/, nothing that bears the solution.
-    const auto entries = lines(test::runCommand("tar tzf '" + tarball.string() + "'").output);
+    // Contents: one top folder shadowlab/, nothing that bears the solution, and exactly the
+    // files the manifest names (plus the exact 4MSM's generated table): a file not named is out.
     ASSERT_GT(entries.size(), 50u);
     for (const auto& e : entries) ASSERT_EQ(e.rfind("shadowlab/", 0), 0u) << e;
     EXPECT_TRUE(solutionBearing(entries).empty()) << testing::PrintToString(solutionBearing(entries));
-    ASSERT_EQ(test::runCommand("tar xzf '" + tarball.string() + "' -C '" + dir.string() + "'").exitCode, 0);
-    const fs::path kit = dir / "shadowlab";
+    std::set<std::string> packed, named;
+    for (const auto& e : entries)
+        if (e.back() != '/') packed.insert(e.substr(std::string("shadowlab/").size()));
+    for (const auto& f : grader::studentKitFiles(test::root())) named.insert(f);
+    named.insert("framework/numerics/msm_exact_table.cpp");
+    EXPECT_EQ(packed, named);
     // Public goldens only: each golden folder belongs to a public scene of the kit.
     for (const auto& e : fs::directory_iterator(kit / "scenes/goldens"))
         if (e.is_directory())
@@ -86,8 +148,7 @@ TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
 
     // Build the program as `./kit demo` does, and time it.
     const auto t0 = Clock::now();
-    auto build = test::runIn(kit, "cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null && "
-                                  "cmake --build build --target shadowlab", 900);
+    auto build = test::buildKitProgram(kit);
     const double buildSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
     ASSERT_EQ(build.exitCode, 0) << build.output;
     std::cout << "student kit: shadowlab built in " << buildSeconds << " s\n";
