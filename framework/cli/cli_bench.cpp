@@ -19,7 +19,7 @@ namespace {
 
 struct BenchArgs {
     int size = 1024, repeats = 21;
-    std::string solution = "reference", json, lightingScene = "scenes/wide_blur.json";
+    std::string solution = defaultSolution(), json, lightingScene = "scenes/wide_blur.json";
     bool jsonGiven = false;
 };
 

@@ -152,7 +152,7 @@ int runCompare(const std::string& scenePath, const std::string& techniques,
 void addCompareCommand(CLI::App& app, Context& ctx) {
     auto* compare = app.add_subcommand("compare", "render a scene with several techniques, side by side");
     struct Args {
-        std::string scene, techniques = "all", solution = "reference", out = "out/compare";
+        std::string scene, techniques = "all", solution = defaultSolution(), out = "out/compare";
         int columns = 4, size = 0;
         bool sheetOnly = false;
     };

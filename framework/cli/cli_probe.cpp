@@ -253,7 +253,7 @@ Table generate(const std::string& function, const std::string& name, int mapSize
 }
 
 struct ProbeArgs {
-    std::string function, solution = "reference", input, out, generate, map;
+    std::string function, solution = defaultSolution(), input, out, generate, map;
     float alpha = kReferenceMomentBias;
     int mapSize = 1024;
 };

@@ -93,7 +93,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
 void addRenderCommands(CLI::App& app, Context& ctx) {
     auto* render = app.add_subcommand("render", "render a scene through a solution");
     struct RenderArgs {
-        std::string scene, solution = "reference", out = "out";
+        std::string scene, solution = defaultSolution(), out = "out";
         bool explain = false;
         std::string technique;
     };

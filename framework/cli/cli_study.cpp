@@ -41,11 +41,12 @@ int runTruth(const std::string& scenePath, const std::string& outDir, int sample
              const std::string& cache, const std::string& backend) {
     Scene scene = loadScene(scenePath);
     auto context = createContext(parseBackendKind(backend));
-    const ShaderLibrary lib = ShaderLibrary::forSolution(resolveSolution("reference"), repoRoot());
+    const std::string solution = defaultSolution();
+    const ShaderLibrary lib = ShaderLibrary::forSolution(resolveSolution(solution), repoRoot());
     const PassPlan plan = planPasses(scene);
     Renderer renderer(lib);
     RenderResult result = renderer.render(scene, plan);
-    writeRenderOutputs(scene, plan, result, {"reference", context->info()}, outDir);
+    writeRenderOutputs(scene, plan, result, {solution, context->info()}, outDir);
     SceneTruthOptions o;
     o.rays.samples = samples;
     o.cacheDir = cache == "none" ? fs::path() : cache.empty() ? defaultTruthCache() : fs::path(cache);
@@ -124,7 +125,7 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     auto* study = app.add_subcommand("study", "sweep techniques, map sizes and filters against the ground truth");
     struct StudyArgs {
         std::string scene, techniques, sizes = "256,512,1024,2048", radii = "1,2,4,8,16",
-                    filters = "gaussian,sat", solution = "reference", out, cache;
+                    filters = "gaussian,sat", solution = defaultSolution(), out, cache;
         int repeats = 3, samples = 1296, image = 0;
         bool explain = false, noProgress = false, noShare = false;
     };

@@ -86,7 +86,7 @@ std::string planLine(const Scene& scene, const PassPlan& plan) {
 }
 
 struct ViewArgs {
-    std::string scene, solution = "reference", screenshot;
+    std::string scene, solution = defaultSolution(), screenshot;
     int frames = 0;
     std::vector<std::string> sets;
     bool noPanels = false;

@@ -76,4 +76,8 @@ fs::path resolveSolution(const std::string& solution) {
     return fs::absolute(dir);
 }
 
+std::string defaultSolution() {
+    return fs::is_directory(repoRoot() / "reference") ? "reference" : "student";
+}
+
 }  // namespace sl

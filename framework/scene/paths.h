@@ -31,4 +31,8 @@ bool isKitRoot(const fs::path& dir);
 // std::runtime_error if the folder does not exist.
 fs::path resolveSolution(const std::string& solution);
 
+// The solution a command runs when none is named: "reference" where the kit has it (the
+// instructor kit), else "student" (the student kit).
+std::string defaultSolution();
+
 }  // namespace sl

@@ -180,7 +180,11 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     std::set<std::string> done;
     for (const StudyRow& r : readStudyCsv(csv)) done.insert(r.key());
 
-    const ShaderLibrary referenceLib = ShaderLibrary::forSolution(resolveSolution("reference"), repoRoot());
+    // The truths are the scene's, not the solution's: the visible points are the framework's
+    // pass, the filtered truth's depth map comes from relativeDepth, which every correct
+    // solution computes alike (the kit without reference/ uses the student's).
+    const ShaderLibrary referenceLib =
+        ShaderLibrary::forSolution(resolveSolution(defaultSolution()), repoRoot());
     Renderer reference(referenceLib);
     Renderer solution(ShaderLibrary::forSolution(resolveSolution(o.solution), repoRoot()));
     CopyYardstick copy(solution);
