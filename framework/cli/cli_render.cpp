@@ -33,6 +33,15 @@ std::string specFolder(std::string spec) {
     return spec;
 }
 
+// probeFailures words a line for the reference ("..., the reference renders 0.5000 ..."), whose
+// render has to meet the probes; a note on another solution's render names that solution.
+std::string probeNote(std::string line, const std::string& solution) {
+    const std::string reference = ", the reference renders ";
+    if (const size_t at = line.find(reference); at != std::string::npos)
+        line.replace(at, reference.size(), ", " + solution + " renders ");
+    return line;
+}
+
 int runRender(const std::string& scenePath, const std::string& solution,
               const std::string& outDir, const std::string& backend, bool explain,
               const std::string& techniques) {
@@ -77,7 +86,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
                                  ") does not match " + std::to_string(failures.size()) +
                                  " probe(s):" + all);
             }
-            for (const auto& f : failures) std::cout << "note: probe: " << f << "\n";
+            for (const auto& f : failures) std::cout << "note: probe: " << probeNote(f, solution) << "\n";
             if (failures.empty())
                 std::cout << "probes: all " << scene.probes.size() << " hold\n";
         }
