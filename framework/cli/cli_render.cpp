@@ -61,7 +61,8 @@ int runRender(const std::string& scenePath, const std::string& solution,
     if (specs.empty()) specs.push_back("");
     for (const std::string& spec : specs) {
         Scene scene = loaded;
-        fs::path out = outDir;
+        // Without --out, one folder per scene: a render never spills loose files into out/.
+        fs::path out = outDir.empty() ? fs::path("out") / loaded.name : fs::path(outDir);
         if (!spec.empty()) {
             auto [technique, parameters] = parseTechniqueSpec(spec);
             overrideTechnique(scene.shadow, technique, parameters);
@@ -102,7 +103,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
 void addRenderCommands(CLI::App& app, Context& ctx) {
     auto* render = app.add_subcommand("render", "render a scene through a solution");
     struct RenderArgs {
-        std::string scene, solution = "reference", out = "out";
+        std::string scene, solution = "reference", out;
         bool explain = false;
         std::string technique;
     };
@@ -110,7 +111,7 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
     render->add_option("--scene", args->scene, "scene JSON file")->required();
     render->add_option("--solution", args->solution,
                        "reference, student, or a folder of stage files");
-    render->add_option("--out", args->out, "output folder");
+    render->add_option("--out", args->out, "output folder (default: out/<scene name>)");
     render->add_flag("--explain", args->explain, "print the pass plan and the time of each pass");
     render->add_option("--technique", args->technique,
                        "override the scene's technique: T[,T2,...] or all; T may carry parameters, "
