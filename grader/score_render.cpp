@@ -101,7 +101,13 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
         const std::string head = "shader error:\n";
         if (auto p = log.find(head); p != std::string::npos) log = log.substr(p + head.size());
         if (log.size() > 4000) log = log.substr(0, 4000) + "\n...";
-        return "compile or link error:\n" + log;
+        // The first line is what the score table and the report's list of tests show: the
+        // first error mapped to the submission's file and line, when there is one.
+        if (log.rfind("---", 0) != 0) return "compile or link error: " + log;
+        std::istringstream lines(log);
+        std::string first;
+        while (std::getline(lines, first) && (first.empty() || first.rfind("---", 0) == 0)) {}
+        return "compile or link error: " + first + "\n" + log;
     }
     if (log.size() > 2000) log = "..." + log.substr(log.size() - 2000);
     std::string text = "render failed (exit " + std::to_string(c.exitCode) + "): " + log;
@@ -113,7 +119,7 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
 
 TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, const Rubric& rubric,
                        const std::function<fs::path(const std::string& image)>& referenceFile,
-                       ReportWriter* report) {
+                       ReportWriter* report, std::vector<ImageFindings>* findings) {
     const bool robustness = job.stage == "robustness";
     TestResult t;
     t.scene = testScene(job.stage, job.scene);  // one name, pass or fail
@@ -195,6 +201,11 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         detail << "\n";
         if (c.worstX >= 0 && c.worst > 1.0) detail << worstTexelText(name, c) << "\n";
         if (report) report->add(t, name, ref, mine, c);
+        if (findings) {
+            ImageFindings f = findImageProblems(c.errorMap, c.nonFinite);
+            f.scene = t.scene, f.stage = t.stage, f.image = name, f.hidden = t.hidden;
+            findings->push_back(f);
+        }
     }
     t.fraction = notes.empty() ? std::min(rubric.points(job.stage, fraction, 1.0), worstCap) : 0.0;
     const auto [pass, zero] = rubric.ramp(job.stage);

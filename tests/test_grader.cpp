@@ -212,6 +212,10 @@ TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
     EXPECT_TRUE(g.full("wide_blur", "sat")) << g.output("wide_blur", "sat");
     for (const char* stage : {"moments", "msm"})
         EXPECT_TRUE(g.full("contact", stage)) << stage << ": " << g.output("contact", stage);
+    // The report's finding (where the failing texels lie) is under the score table too.
+    EXPECT_NE(g.run.output.find("what the failures look like:\n  - contact (sat, moments_filtered): "),
+              std::string::npos) << g.run.output;
+    EXPECT_NE(g.run.output.find("away from texel (0, 0)"), std::string::npos) << g.run.output;
 }
 
 // The robustness stage (issue 4): the fragile variants of msm.glsl lose points there, with the
