@@ -171,7 +171,7 @@ void ReportWriter::add(const TestResult& t, const std::string& image, const Imag
         writePngPreview(heatMap(reduce(c.errorMap, step, true)), folder / e.diff, false);
         if (full) writePngPreview(heatMap(c.errorMap), folder / (e.diffFull = base + "_diff_full.png"), false);
     }
-    ImageFindings f = findImageProblems(c.errorMap, c.nonFinite);
+    ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, image);
     f.scene = t.scene, f.stage = t.stage, f.image = image, f.hidden = t.hidden;
     findings_.push_back(f);
     entries_.push_back(std::move(e));
