@@ -3,6 +3,7 @@
 // command line its own README and handout show. Slow (a build of the kit; ccache makes the
 // compiles hits when this build used it): see docs/grading.md for the measured time.
 #include "kit_test_support.h"
+#include "student_kit.h"
 
 #include <chrono>
 
@@ -39,6 +40,30 @@ TEST(KitStudent, SolutionBearingPathsAreRecognised) {
                                   "shadowlab/docs/performance_log.md",
                                   "shadowlab/student/msm.glsl", "shadowlab/framework/numerics/msm_exact.h"});
     EXPECT_EQ(found.size(), 6u) << testing::PrintToString(found);
+}
+
+// The pages a student reads, as the student kit ships them (grader::studentMarkdown), name no
+// file, test or command the kit does not have (a file in reference/, the oracles, the
+// submissions, a test it leaves out, a --gtest_filter): those lines are instructor blocks
+// (saying that a kit may have no reference/ is fine). Quick: no
+// kit is built (the test below checks README and handout in a built kit, and runs them).
+TEST(KitStudent, StudentDocsNameNothingTheKitLacks) {
+    const auto dropped = grader::studentKitDroppedTests(test::root());
+    for (const char* doc : {"README.md", "docs/handout.md", "docs/numerics.md", "docs/stage_contract.md"}) {
+        const std::string text = grader::studentMarkdown(test::readFile(test::root() / doc));
+        static const std::regex missing(
+            R"((^|[^A-Za-z_/])(reference/[A-Za-z_*]|tests/oracles|tests/submissions|--gtest_filter|shadowlab_tests|catalogue\.md|performance_log\.md))");
+        std::smatch m;
+        EXPECT_FALSE(std::regex_search(text, m, missing))
+                << doc << " (student kit) names " << m[2] << ": ..." << m.suffix().str().substr(0, 120);
+        for (const auto& name : dropped)
+            EXPECT_EQ(text.find(name), std::string::npos) << doc << " (student kit) names " << name;
+    }
+    // What the framework does with the stage files' preprocessor lines (shader_source.cpp;
+    // HostileErrorLines.LineAndExtensionDirectivesAreRefused): #line is refused, not prepended.
+    const std::string contract = test::readFile(test::root() / "docs/stage_contract.md");
+    EXPECT_NE(contract.find("`#line` and `#extension` are refused"), std::string::npos);
+    EXPECT_EQ(contract.find("and a `#line` directive"), std::string::npos);
 }
 
 TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
