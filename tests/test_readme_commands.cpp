@@ -29,13 +29,15 @@ fs::path kitLookalike(const std::string& name) {
 
 TEST(ReadmeCommands, ExtractionFindsBlockAndInlineCommands) {
     const std::string md = "Run\n```sh\n./kit demo   # builds\n  # comment only\n"
-                           "build/shadowlab info\n```\nthen `build/shadowlab grade --submission\n"
+                           "build/shadowlab info\nxvfb-run -a build/shadowlab view --scene s.json  # no display\n"
+                           "```\nthen `build/shadowlab grade --submission\n"
                            "student --out g` and `probe moments`.\n";
     const auto c = test::documentedCommands(md);
-    ASSERT_EQ(c.size(), 3u) << testing::PrintToString(c);
+    ASSERT_EQ(c.size(), 4u) << testing::PrintToString(c);
     EXPECT_EQ(c[0], "./kit demo");
     EXPECT_EQ(c[1], "build/shadowlab info");
-    EXPECT_EQ(c[2], "build/shadowlab grade --submission student --out g");
+    EXPECT_EQ(c[2], "xvfb-run -a build/shadowlab view --scene s.json");
+    EXPECT_EQ(c[3], "build/shadowlab grade --submission student --out g");
 }
 
 TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
@@ -51,6 +53,8 @@ TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
     EXPECT_EQ(failures, "");
     std::cout << "ran " << commands.size() << " documented commands\n" << skipped;
     EXPECT_TRUE(fs::exists(dir / "out/classic/final.png"));
+    if (skipped.find("no xvfb-run") == std::string::npos)  // README: view --screenshot
+        EXPECT_TRUE(fs::exists(dir / "out/view.png"));
     EXPECT_GT(fs::file_size(dir / "cases.csv"), 1000u);
     // ./kit wrote into the scratch folder; the grades graded the stubs (the stage files taken).
     EXPECT_TRUE(fs::exists(dir / "out/demo/student/classic/final.png"));
