@@ -41,6 +41,12 @@ Image reduce(const Image& img, int step, bool blockMax) {
     return out;
 }
 
+}  // namespace
+
+Image previewImage(const Image& image) { return reduce(image, stepFor(image), false); }
+
+namespace {
+
 // error/tolerance -> colour: black (exact), blue to cyan (within tolerance), yellow to red.
 Image heatMap(const Image& err) {
     Image out(err.width, err.height, 3);
