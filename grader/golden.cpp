@@ -4,9 +4,11 @@
 // relative error of 2^-16 (100× inside the tolerance) that lets ZIP compress the low bits
 // away; shadow and colour images are half floats (error ≤ 5e-4, 20× inside their tolerance).
 // Both encodings are deterministic, so `golden --check` can compare hashes with the manifest.
+// Beside each EXR, a PNG preview (<image>.png) for people to look at, checked the same way.
 // Hidden scenes' goldens go into goldens/ next to their scene file, never the public folder.
 #include "golden.h"
 #include "raw_image.h"
+#include "report.h"
 #include "worker.h"
 
 #include "grader.h"
@@ -53,6 +55,19 @@ void writeEncoded(const Image& image, const fs::path& path, bool moments) {
     writeExr(img, path, moments ? SampleType::Float : SampleType::Half);
 }
 
+// The golden `exr` just written, and its PNG preview beside it (<image>.png: the stored values
+// as render's PNGs show them, colour sRGB-encoded, at most 512 texels wide: the report's
+// preview): both into the manifest entry's "images" and "previews".
+void writeGolden(const Image& pixels, const fs::path& dir, const std::string& scene,
+                 const std::string& image, bool moments, nlohmann::json& images,
+                 nlohmann::json& previews) {
+    const fs::path exr = dir / (image + ".exr"), png = dir / (image + ".png");
+    writeEncoded(pixels, exr, moments);
+    images[image] = nlohmann::json{{"file", scene + "/" + image + ".exr"}, {"sha256", sha256File(exr)}};
+    writePngPreview(previewImage(readAnyImage(exr)), png, image.rfind("final", 0) == 0);
+    previews[image] = nlohmann::json{{"file", scene + "/" + image + ".png"}, {"sha256", sha256File(png)}};
+}
+
 std::string envOr(const char* name, const char* fallback) {
     const char* v = std::getenv(name);
     return v ? v : fallback;
@@ -95,29 +110,23 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
     if (!failures.empty()) return nullptr;
     fs::create_directories(dir);
     const std::string& name = gs.name;
-    nlohmann::json images = nlohmann::json::object();
+    nlohmann::json images = nlohmann::json::object(), previews = nlohmann::json::object();
     for (const auto& [image, pixels] : result.images) {
         if (image.rfind("sat", 0) == 0) continue;  // graded through moments_filtered
-        const fs::path file = dir / (image + ".exr");
-        writeEncoded(pixels, file, image.rfind("moments", 0) == 0);
-        images[image] = nlohmann::json{{"file", name + "/" + image + ".exr"},
-                                       {"sha256", sha256File(file)}};
+        writeGolden(pixels, dir, name, image, image.rfind("moments", 0) == 0, images, previews);
     }
     // The msm stage's reference: lit from the golden filtered moments as stored (rounded),
     // exactly what a student's msm.glsl gets as input.
     if (result.images.count("moments_filtered")) {
         const Image stored = readAnyImage(dir / "moments_filtered.exr");
         RenderResult isolated = renderFromMoments(renderer, scene, stored);
-        for (const auto& [image, pixels] : isolated.images) {
-            if (image.rfind("shadow", 0) != 0) continue;
-            const fs::path file = dir / ("msm_" + image + ".exr");
-            writeEncoded(pixels, file, false);
-            images["msm_" + image] = nlohmann::json{{"file", name + "/msm_" + image + ".exr"},
-                                                    {"sha256", sha256File(file)}};
-        }
+        for (const auto& [image, pixels] : isolated.images)
+            if (image.rfind("shadow", 0) == 0)
+                writeGolden(pixels, dir, name, "msm_" + image, false, images, previews);
     }
     nlohmann::json entry = {{"scene_sha256", sha256File(gs.path)},
                             {"images", images},
+                            {"previews", previews},
                             {"mesa_version", info.mesaVersion},
                             {"renderer", info.renderer}};
     if (gs.hidden) entry["scene_file"] = fs::absolute(gs.path).lexically_normal().string();
@@ -144,6 +153,11 @@ void compareEntry(const std::string& scene, const nlohmann::json& fresh,
     for (const auto& [image, e] : old["images"].items())
         if (!fresh["images"].contains(image))
             stale.push_back(scene + "/" + image + ": in the manifest, no longer rendered");
+    // The PNG previews are checked like the images they show.
+    const auto& oldPreviews = old.contains("previews") ? old["previews"] : nlohmann::json::object();
+    for (const auto& [image, e] : fresh["previews"].items())
+        if (!oldPreviews.contains(image)) stale.push_back(scene + "/" + image + ".png: no preview in the manifest");
+        else if (oldPreviews[image]["sha256"] != e["sha256"]) stale.push_back(scene + "/" + image + ".png");
 }
 
 }  // namespace
@@ -236,7 +250,8 @@ GoldenRun runGoldens(const GoldenOptions& o) {
             {"GALLIUM_DRIVER", envOr("GALLIUM_DRIVER", "llvmpipe")},
             {"moment_encoding",
              "float32, mantissa rounded to " + std::to_string(kMomentMantissaBits) + " bits, ZIP"},
-            {"image_encoding", "half, ZIP"}};
+            {"image_encoding", "half, ZIP"},
+            {"preview_encoding", "PNG beside each EXR, 8-bit, at most 512 texels wide, colour sRGB"}};
         manifest["solution"] = o.solution;
         manifest["made_by"] = madeBy;
         fs::create_directories(folder);

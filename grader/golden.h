@@ -35,7 +35,9 @@ struct GoldenRun {
 // Renders every scene through the solution in this process, checks each scene's probes on
 // that render (a probe that does not hold throws SceneError naming the scene file, the probe
 // and the values; nothing is written), and writes, per scene, <folder>/<scene>/<image>.exr
-// (moments float32 with a shortened mantissa, images half; ZIP) and <folder>/manifest.json.
+// (moments float32 with a shortened mantissa, images half; ZIP), beside each its PNG preview
+// <image>.png (at most 512 wide; colour sRGB), and <folder>/manifest.json (the SHA-256 of
+// both: `check` compares the previews too).
 // A manifest is merged: entries of scenes not rendered this time are kept (and listed in
 // `messages`), never dropped. With `check`, writes nothing and lists what differs.
 GoldenRun runGoldens(const GoldenOptions& options);

@@ -196,6 +196,7 @@ public:
         });
         // Points in exact hundredths; the rubric's filter mode (points.h).
         assignPoints(s, rubric_);
+        s.findings = diagnose(s, imageFindings_, false);
         if (report_) report_->finish(s);
         clock.lap("comparisons and report");
         if (!o_.keepWork) fs::remove_all(work, ec);
@@ -400,7 +401,8 @@ private:
         const RenderToScore render{job.stage, scenes_[job.scene], job.out, job.missing, job.child,
                                    job.notRunReason};
         return scoreRender(render, o_, rubric_,
-                           [&](const std::string& image) { return referenceFile(job.scene, image); }, report);
+                           [&](const std::string& image) { return referenceFile(job.scene, image); }, report,
+                           &imageFindings_);
     }
 
     const GradeOptions& o_;
@@ -417,6 +419,7 @@ private:
     size_t scored_ = 0;                    // jobs_[0, scored_) are scored
     std::vector<TestResult> tests_;
     std::unique_ptr<ReportWriter> report_;
+    std::vector<ImageFindings> imageFindings_;  // where each compared image fails (the findings)
 };
 
 }  // namespace

@@ -73,6 +73,9 @@ struct GradeSummary {
     std::string referenceMode;          // "live" | "golden"
     std::string filterMode = "both";    // the rubric's "filters": both | either
     std::vector<std::string> notes;     // how it was graded: filter mode, points per stage
+    // What the failures look like (report_diagnosis.h), visible tests only: the report's list,
+    // printed under the score table too.
+    std::vector<std::string> findings;
     bool failed = false;                // the grader itself failed (results.json says why)
 };
 

@@ -41,6 +41,12 @@ Image reduce(const Image& img, int step, bool blockMax) {
     return out;
 }
 
+}  // namespace
+
+Image previewImage(const Image& image) { return reduce(image, stepFor(image), false); }
+
+namespace {
+
 // error/tolerance -> colour: black (exact), blue to cyan (within tolerance), yellow to red.
 Image heatMap(const Image& err) {
     Image out(err.width, err.height, 3);
@@ -171,7 +177,7 @@ void ReportWriter::add(const TestResult& t, const std::string& image, const Imag
         writePngPreview(heatMap(reduce(c.errorMap, step, true)), folder / e.diff, false);
         if (full) writePngPreview(heatMap(c.errorMap), folder / (e.diffFull = base + "_diff_full.png"), false);
     }
-    ImageFindings f = findImageProblems(c.errorMap, c.nonFinite);
+    ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, image);
     f.scene = t.scene, f.stage = t.stage, f.image = image, f.hidden = t.hidden;
     findings_.push_back(f);
     entries_.push_back(std::move(e));

@@ -13,6 +13,10 @@
 
 namespace sl::grader {
 
+// An image's preview, as the report shows it and as the goldens' PNGs hold it: every step-th
+// texel, the step the smallest that brings the long side to at most 512.
+Image previewImage(const Image& image);
+
 class ReportWriter {
 public:
     // `dir` is OUT/report; the staff report goes to dir's sibling "report-staff".

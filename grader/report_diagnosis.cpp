@@ -8,8 +8,11 @@
 //   bias       failing hard cases in the sets whose Hankel matrix is singular without the
 //              moment bias (constant depth, two/three points, c3 = 0, 16-bit moments);
 //   guards     hard cases outside [0, 1] or non-monotone: the clamps and pivot floors;
-//   interface  `final` loses points while every isolated stage of that scene passes.
+//   interface  `final` loses points while every isolated stage of that scene passes;
+//   ladder     the moments stage's relativeDepth ladder fails (outside [near, far]: no clamp).
 #include "report_diagnosis.h"
+
+#include "depth_ladder.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -33,10 +36,22 @@ std::string percent(double v) {
 
 }  // namespace
 
-ImageFindings findImageProblems(const Image& e, long nonFinite) {
+ImageFindings findImageProblems(const Image& e, long nonFinite, const std::string& image) {
     ImageFindings f;
     f.nonFinite = nonFinite;
     if (e.empty()) return f;
+    if (image == kDepthLadderImage) {
+        f.depthLadder = true;
+        const auto& rows = relativeDepthLadder();
+        f.rows = e.width;
+        for (int x = 0; x < e.width; ++x) {
+            if (e.at(x, 0, 0) <= 1.0f) continue;  // NaN counts as failing
+            ++f.failing;
+            if (size_t(x) < rows.size() && (rows[x].x < rows[x].y || rows[x].x > rows[x].z))
+                ++f.failingOutsideRange;
+        }
+        return f;
+    }
     // A border rule reaches as far as the filter does: up to the kernel's radius (<= 32 in
     // the public scenes' maps of 512-2048 texels), so the band grows with the map.
     f.band = std::max(4, std::max(e.width, e.height) / 32);
@@ -54,14 +69,38 @@ ImageFindings findImageProblems(const Image& e, long nonFinite) {
     return f;
 }
 
+std::string depthLadderText(const ImageFindings& f) {
+    std::string text = "the depth-ladder probe finds " + std::to_string(f.failing) + " of its " +
+                       std::to_string(f.rows) + " light depths off";
+    if (f.failing > 0 && f.failingOutsideRange == f.failing)
+        return text + ", all outside [near, far]: relativeDepth must clamp (d - near) / (far - near) "
+                      "to [0, 1]";
+    if (f.failingOutsideRange > 0)
+        return text + " (" + std::to_string(f.failingOutsideRange) + " outside [near, far], " +
+               std::to_string(f.failing - f.failingOutsideRange) +
+               " inside): look at relativeDepth, then computeMoments";
+    return text + ", inside [near, far]: look at relativeDepth, then computeMoments";
+}
+
 std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<ImageFindings>& images,
                                   bool includeHidden) {
     std::vector<std::string> out;
     auto shown = [&](bool hidden) { return includeHidden || !hidden; };
 
+    // The relativeDepth ladder: one row of light depths (no border, no map), the same rows in
+    // every scene's moments test: one line per outcome, with its scenes.
+    std::map<std::string, std::set<std::string>> ladders;
+    for (const auto& f : images)
+        if (shown(f.hidden) && f.depthLadder && f.failing > 0) ladders[depthLadderText(f)].insert(f.scene);
+    for (const auto& [text, scenes] : ladders)
+        out.push_back(list(scenes) + " (moments): " + text +
+                      " (docs/stage_contract.md); `shadowlab probe moments --generate "
+                      "depth-ladder` writes its rows with the expected moments.");
+
     // Border: a red frame.
     for (const auto& f : images) {
-        if (!shown(f.hidden) || f.failing < 4 || f.failingNearBorder < 0.9 * f.failing) continue;
+        if (!shown(f.hidden) || f.depthLadder || f.failing < 4 || f.failingNearBorder < 0.9 * f.failing)
+            continue;
         const bool sat = f.stage == "sat";
         out.push_back(f.scene + " (" + f.stage + ", " + f.image + "): " +
                       percent(double(f.failingNearBorder) / f.failing) + " of the " +

@@ -20,10 +20,20 @@ struct ImageFindings {
     int reach = 0;             // the farthest of those from the edge, plus one (texels)
     long failingFar = 0;       // of the failing ones, in the half away from texel (0, 0)
     long nonFinite = 0;
+    // The moments stage's relativeDepth ladder (depth_ladder.h: one row of light depths, not
+    // a map, so it has no border): its rows, and the failing ones outside [near, far].
+    bool depthLadder = false;
+    long rows = 0, failingOutsideRange = 0;
 };
 
-// Counts an error map's failing texels (> 1) and those near the border.
-ImageFindings findImageProblems(const Image& errorMap, long nonFinite);
+// Counts an error map's failing texels (> 1) and those near the border; for the depth
+// ladder's image (`image` kDepthLadderImage), the failing rows outside their depth range.
+ImageFindings findImageProblems(const Image& errorMap, long nonFinite, const std::string& image = "");
+
+// The depth ladder's failures in words: "the depth-ladder probe finds 36 of its 75 light depths
+// off, all outside [near, far]: relativeDepth must clamp ..." (the moments test's first line,
+// and the finding).
+std::string depthLadderText(const ImageFindings& ladder);
 
 // The patterns the summary's tests (and the images' findings) match, one sentence each.
 // Hidden-scene tests count only with `includeHidden` (a student-visible report leaves them out).

@@ -152,6 +152,10 @@ void printScoreTable(std::ostream& out, const GradeSummary& s) {
         out << "  (visible tests only: " << v.hiddenTests
             << " tests on hidden scenes are graded too and shown after the due date)\n";
     for (const auto& n : s.notes) out << "  " << n << "\n";
+    if (!s.findings.empty()) {
+        out << "  what the failures look like:\n";
+        for (const auto& f : s.findings) out << "  - " << f << "\n";
+    }
     for (const auto& w : v.warnings) out << "  warning: " << w << "\n";
     if (!v.hiddenWarnings.empty())
         out << "  warning: " << v.hiddenWarnings.size() << " about hidden scenes (for the course staff)\n";

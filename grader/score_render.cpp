@@ -101,7 +101,13 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
         const std::string head = "shader error:\n";
         if (auto p = log.find(head); p != std::string::npos) log = log.substr(p + head.size());
         if (log.size() > 4000) log = log.substr(0, 4000) + "\n...";
-        return "compile or link error:\n" + log;
+        // The first line is what the score table and the report's list of tests show: the
+        // first error mapped to the submission's file and line, when there is one.
+        if (log.rfind("---", 0) != 0) return "compile or link error: " + log;
+        std::istringstream lines(log);
+        std::string first;
+        while (std::getline(lines, first) && (first.empty() || first.rfind("---", 0) == 0)) {}
+        return "compile or link error: " + first + "\n" + log;
     }
     if (log.size() > 2000) log = "..." + log.substr(log.size() - 2000);
     std::string text = "render failed (exit " + std::to_string(c.exitCode) + "): " + log;
@@ -113,7 +119,7 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
 
 TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, const Rubric& rubric,
                        const std::function<fs::path(const std::string& image)>& referenceFile,
-                       ReportWriter* report) {
+                       ReportWriter* report, std::vector<ImageFindings>* findings) {
     const bool robustness = job.stage == "robustness";
     TestResult t;
     t.scene = testScene(job.stage, job.scene);  // one name, pass or fail
@@ -153,6 +159,8 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
             images.push_back(name);
     if (images.empty()) images.push_back(prefix);
     double fraction = 1.0, worstCap = 1.0;
+    double mapsFraction = 1.0, ladderFraction = 1.0;  // the moment maps', the depth ladder's
+    ImageFindings ladderFindings;
     std::ostringstream detail;
     for (const auto& name : images) {
         Image ref, mine;
@@ -195,6 +203,12 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         detail << "\n";
         if (c.worstX >= 0 && c.worst > 1.0) detail << worstTexelText(name, c) << "\n";
         if (report) report->add(t, name, ref, mine, c);
+        ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, name);
+        f.scene = t.scene, f.stage = t.stage, f.image = name, f.hidden = t.hidden;
+        (ladder ? ladderFraction : mapsFraction) =
+            std::min(ladder ? ladderFraction : mapsFraction, c.error.empty() ? c.fraction : 0.0);
+        if (ladder) ladderFindings = f;
+        if (findings) findings->push_back(f);
     }
     t.fraction = notes.empty() ? std::min(rubric.points(job.stage, fraction, 1.0), worstCap) : 0.0;
     const auto [pass, zero] = rubric.ramp(job.stage);
@@ -206,6 +220,15 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
                "x the tolerance (look at the borders and edges), at most " +
                fixedDigits(100.0 * worstCap, 0) + "% of the points; " + fixedDigits(100.0 * fraction, 3) +
                "% of the texels within tolerance\n";
+    else if (ladderFindings.depthLadder && ladderFraction < 1.0 && ladderFraction <= mapsFraction)
+        // The ladder decides the points: say so, not "52% within tolerance" of the stage,
+        // whose moment maps may all be right.
+        head = depthLadderText(ladderFindings) + "; " + fixedDigits(100.0 * ladderFraction, 2) +
+               "% within tolerance (full marks from " + fixedDigits(100.0 * pass, 1) + "%, none at " +
+               fixedDigits(100.0 * zero, 1) + "%); " +
+               (mapsFraction >= 1.0 ? std::string("every moment map within tolerance")
+                                    : "the moment maps " + fixedDigits(100.0 * mapsFraction, 2) + "%") +
+               "\n";
     else head = fixedDigits(100.0 * fraction, 2) + "% within tolerance (full marks from " +
                 fixedDigits(100.0 * pass, 1) + "%, none at " + fixedDigits(100.0 * zero, 1) + "%)\n";
     if (notes.empty() && fraction == 0.0 && detail.str().find("stub value") != std::string::npos)

@@ -30,10 +30,11 @@ struct RenderToScore {
 std::string testScene(const std::string& stage, const GradedScene& scene);
 
 // The test of a finished render. `referenceFile(image)` is the reference's image that
-// `image` is compared with; `report` (may be null) gets each compared image.
+// `image` is compared with; `report` (may be null) gets each compared image, and `findings`
+// (may be null) where each one's failing texels lie (report_diagnosis.h).
 TestResult scoreRender(const RenderToScore& render, const GradeOptions& options, const Rubric& rubric,
                        const std::function<std::filesystem::path(const std::string& image)>& referenceFile,
-                       ReportWriter* report);
+                       ReportWriter* report, std::vector<ImageFindings>* findings = nullptr);
 
 // What a worker's failure (timeout, signal, compile error, exit code) means for the student.
 std::string failureText(const ChildResult& child, const GradeOptions& options);

@@ -30,7 +30,9 @@ inline std::vector<std::string> documentedCommands(const std::string& markdown) 
         line = std::regex_replace(line, std::regex(R"(\s+#\s.*$)"), "");
         line = std::regex_replace(line, std::regex(R"(\s+)"), " ");
         line = std::regex_replace(line, std::regex(R"(^ | $)"), "");
-        if (line.rfind("./kit", 0) == 0 || line.rfind("build/shadowlab ", 0) == 0) out.push_back(line);
+        if (line.rfind("./kit", 0) == 0 || line.rfind("build/shadowlab ", 0) == 0 ||
+            line.rfind("xvfb-run -a build/shadowlab ", 0) == 0)
+            out.push_back(line);
     };
     std::istringstream in(markdown);
     std::string line, prose;
@@ -101,7 +103,8 @@ inline CommandResult buildKitProgram(const fs::path& kit) {
 //  - `./kit deps --check` (it traces a whole build, minutes; .ci/run runs it after the suite),
 //  - `./kit study` (the full study, ~15 minutes; tests/test_study.cpp runs a tiny sweep),
 //  - benchmarks get `--size 64 --repeats 3` (a full-size benchmark is a minute of CPU),
-//  - `view` runs under xvfb-run (a virtual display), and a time limit closes its window.
+//  - `view` runs under xvfb-run (a virtual display; a line may say `xvfb-run -a` itself), and a
+//    time limit closes its window; with --screenshot it ends by itself and must succeed.
 // Returns "" when it passed, else what went wrong (the command, its exit code, its output).
 inline std::string runDocumented(const fs::path& dir, std::string command, bool skipKitTest,
                                  const std::string& env, std::string* skipped = nullptr) {
@@ -118,6 +121,8 @@ inline std::string runDocumented(const fs::path& dir, std::string command, bool 
         return "";
     }
     const bool view = command.find("shadowlab view") != std::string::npos;
+    // A window that stays open until the time limit closes it (a screenshot ends by itself).
+    const bool window = view && command.find("--screenshot") == std::string::npos;
     if (command.find(" bench") != std::string::npos && command.find("--size") == std::string::npos)
         command += " --size 64 --repeats 3";
     if (view) {
@@ -125,14 +130,14 @@ inline std::string runDocumented(const fs::path& dir, std::string command, bool 
             if (skipped) *skipped += command + ": skipped (no xvfb-run; ./kit installs xvfb)\n";
             return "";
         }
-        command = "xvfb-run -a " + command;
+        if (command.rfind("xvfb-run ", 0) != 0) command = "xvfb-run -a " + command;
     }
     const auto t0 = std::chrono::steady_clock::now();
-    CommandResult r = runIn(dir, command, view ? 8 : 900, env);
+    CommandResult r = runIn(dir, command, window ? 8 : 900, env);
     std::printf("  %6.1f s  %s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
                 command.c_str());
     // A window that is still open when the time limit ends it ran without an error.
-    const bool ok = r.exitCode == 0 || (view && r.exitCode == 124);
+    const bool ok = r.exitCode == 0 || (window && r.exitCode == 124);
     if (ok) return "";
     return command + "\n  exit " + std::to_string(r.exitCode) + "\n" + r.output + "\n";
 }

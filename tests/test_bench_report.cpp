@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <regex>
+#include <set>
 
 namespace sl {
 namespace {
@@ -104,6 +106,63 @@ TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
     for (const char* key : {"ratio", "ratioMin", "ratioMax", "goal", "implemented", "verdict",
                             "tileBaselineMs", "tileRatio"})
         EXPECT_TRUE(first.contains(key)) << key;
+}
+
+// The goals the docs quote are the bench's own (one source: the goals in filter_benchmark.cpp):
+// the handout's goal for the student's Gaussian and performance.md's table of goals. The
+// measured figure both give for 8×8 groups is performance.md's, in one form.
+TEST(FilterBenchmark, DocsQuoteTheBenchsGoals) {
+    test::sharedContext();
+    Renderer renderer(test::library("reference"));
+    const BenchReport report =
+        runFilterBenchmark(renderer, BenchOptions{16, 3, tinySatScene().string()});
+    auto goal = [&](const std::string& name) {
+        for (const auto& row : report.rows)
+            if (row.name.rfind(name, 0) == 0) return row.goal;
+        ADD_FAILURE() << "no bench row " << name << "\n" << formatBenchReport(report);
+        return -1.0;
+    };
+    auto flat = [](const char* doc) {  // the doc's text with every run of white space one space
+        return std::regex_replace(test::readFile(test::root() / doc), std::regex(R"(\s+)"), " ");
+    };
+    const std::string handout = flat("docs/handout.md"), perf = flat("docs/performance.md");
+    const std::string num = R"(([0-9]+(?:\.[0-9]+)?))", range = R"(([0-9.]+–[0-9]+(?:\.[0-9]+)?))";
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(handout, m, std::regex(
+        "the goal it checks is " + num + "× a copy per pass at r = 8, along x and along y \\(" +
+        num + "× at r = 16\\)")))
+        << "docs/handout.md no longer quotes the Gaussian's goal in the form this test reads";
+    EXPECT_DOUBLE_EQ(std::stod(m[1]), goal("gaussian r=8, x"));
+    EXPECT_DOUBLE_EQ(std::stod(m[1]), goal("gaussian r=8, y"));
+    EXPECT_DOUBLE_EQ(std::stod(m[2]), goal("gaussian r=16, x"));
+    EXPECT_DOUBLE_EQ(std::stod(m[2]), goal("gaussian r=16, y"));
+    // No other goal for one direction only ("1.5× along y").
+    EXPECT_FALSE(std::regex_search(handout, std::regex(num + "× (a copy )?along [xy]")))
+        << "docs/handout.md states a goal per direction";
+
+    // performance.md's goal table: one row per goal, each the bench's.
+    int rows = 0;
+    const std::regex perfRow(
+        R"(\| (Gaussian r = (\d+), ([xy])|SAT, rows \+ columns|SAT lookup, lighting pass): ≤ )" +
+        num + " \\|");
+    for (std::sregex_iterator it(perf.begin(), perf.end(), perfRow), end; it != end; ++it, ++rows) {
+        const auto& r = *it;
+        const std::string pass = r[2].matched
+            ? "gaussian r=" + r[2].str() + ", " + r[3].str()
+            : r[1] == "SAT, rows + columns" ? "sat, rows + columns" : "sat lookup, lighting pass";
+        EXPECT_DOUBLE_EQ(std::stod(r[4]), goal(pass)) << "docs/performance.md: " << r[0];
+    }
+    EXPECT_EQ(rows, 6) << "docs/performance.md's table of goals";
+
+    // 8×8 groups against 64×1: the same measured figures wherever they are quoted.
+    const std::regex groups("costs? " + range + " copies at r = 8 instead of " + range);
+    std::set<std::string> quoted;
+    for (const std::string* doc : {&handout, &perf}) {
+        std::sregex_iterator it(doc->begin(), doc->end(), groups), end;
+        EXPECT_NE(it, end) << (doc == &perf ? "performance.md" : "handout.md") << ": no 8×8 figure";
+        for (; it != end; ++it) quoted.insert((*it)[1].str() + " / " + (*it)[2].str());
+    }
+    EXPECT_EQ(quoted.size(), 1u) << testing::PrintToString(quoted);
 }
 
 // The tiled copy's row, found by its name "copy, N texels per invocation".

@@ -26,6 +26,18 @@ TEST(Cli, RenderWritesImagesPreviewsAndSidecar) {
     EXPECT_EQ(sidecar["passes"].size(), 5u);  // shadow, 2 scans, resolve, lighting
 }
 
+// Without --out a render goes to out/<scene name>/ under the current folder, never loose into out/.
+TEST(Cli, RenderWithoutOutWritesOneFolderPerScene) {
+    const fs::path dir = test::tempDir("cli_render_default_out");
+    auto r = test::runCommand("cd '" + dir.string() + "' && " + test::shadowlabBinary() +
+                              " render --scene " + test::scenePath("unlit_no_shadow").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "out/unlit_no_shadow/final.png")) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "out/unlit_no_shadow/render.json")) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out/final.png")) << r.output;
+    EXPECT_NE(r.output.find("wrote out/unlit_no_shadow/"), std::string::npos) << r.output;
+}
+
 TEST(Cli, MalformedSceneNamesFileKeyAndExpectation) {
     fs::path dir = test::tempDir("cli_bad_scene");
     std::ofstream(dir / "bad.json")

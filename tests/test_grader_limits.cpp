@@ -47,6 +47,11 @@ TEST(GraderLimits, CompileErrorNamesTheStudentsFileAndLine) {
         EXPECT_NE(g.output("contact", stage).find("compile or link error"), std::string::npos);
         EXPECT_NE(g.output("contact", stage).find(where), std::string::npos)
             << "expected " << where << " in\n" << g.output("contact", stage);
+        // The first line (the score table's, the report's list of tests) names them too.
+        EXPECT_EQ(g.output("contact", stage).rfind("compile or link error: " + where + ":", 0), 0u)
+            << g.output("contact", stage);
+        EXPECT_NE(g.run.output.find("contact: compile or link error: " + where + ":"), std::string::npos)
+            << g.run.output;
     }
     EXPECT_TRUE(g.full("contact", "moments"));
     EXPECT_TRUE(g.full("contact", "sat")) << g.output("contact", "sat");

@@ -70,6 +70,44 @@ TEST(InstructorGoldens, HiddenGoldensGoNextToTheirSceneAndThePublicManifestKeeps
     EXPECT_NE(stale.output.find("--scenes " + hidden.string()), std::string::npos) << stale.output;
 }
 
+// Every golden EXR has its PNG preview beside it (written by `golden` with the EXR), listed in
+// the manifest with its SHA-256; `golden --check` checks the previews as it checks the images.
+TEST(InstructorGoldens, EveryGoldenHasAPngPreviewThatCheckChecks) {
+    const fs::path committed = test::root() / "scenes" / "goldens";
+    const auto manifest = nlohmann::json::parse(std::ifstream(committed / "manifest.json"));
+    int previews = 0;
+    for (const auto& [scene, entry] : manifest["scenes"].items()) {
+        ASSERT_TRUE(entry.contains("previews")) << scene;
+        for (const auto& [image, e] : entry["images"].items()) {
+            ASSERT_TRUE(entry["previews"].contains(image)) << scene << "/" << image;
+            const auto& p = entry["previews"][image];
+            EXPECT_EQ(p["file"], scene + "/" + image + ".png");
+            ASSERT_TRUE(fs::exists(committed / scene / (image + ".png"))) << scene << "/" << image;
+            EXPECT_EQ(p["sha256"], sha256File(committed / scene / (image + ".png"))) << scene << "/" << image;
+            ++previews;
+        }
+        for (const auto& f : fs::directory_iterator(committed / scene))  // no preview without its EXR
+            if (f.path().extension() == ".png")
+                EXPECT_TRUE(fs::exists(fs::path(f.path()).replace_extension(".exr"))) << f.path();
+    }
+    EXPECT_GE(previews, 30);
+
+    // A preview's hash that is not the fresh render's, and a manifest without previews: stale.
+    const fs::path dir = test::tempDir("instructor_goldens_previews");
+    const fs::path pub = copyOfPublicGoldens(dir / "public");
+    auto j = manifest;
+    j["scenes"]["classic"]["previews"]["final"]["sha256"] = std::string(64, '0');
+    j["scenes"]["contact"].erase("previews");
+    std::ofstream(pub / "manifest.json") << j.dump(2);
+    auto r = test::runCommand(test::shadowlabBinary() + " golden --check --scenes classic,contact --out " +
+                              pub.string());
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("stale: classic/final.png\n"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("stale: classic/shadow.png"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("stale: contact/final.png: no preview in the manifest"), std::string::npos)
+        << r.output;
+}
+
 TEST(InstructorGoldens, CheckFlagsAHiddenSceneLeftInThePublicFolder) {
     // What the old instructions produced: a hidden scene's goldens in the public folder.
     const fs::path dir = test::tempDir("instructor_goldens_leak");

@@ -149,4 +149,17 @@ TEST(InstructorProbes, RenderChecksTheProbesOfTheReference) {
     EXPECT_TRUE(fs::exists(dir / "bad" / "shadow.exr"));  // written, to look at
 }
 
+// Another solution's render only hears about the probes, in notes that name that solution and
+// its value (the stubs: -1), not the reference.
+TEST(InstructorProbes, RenderOfAnotherSolutionNamesItInTheProbeNotes) {
+    auto r = test::runCommand(test::shadowlabBinary() + " render --solution student --scene " +
+                              test::scenePath("classic").string() + " --out " +
+                              test::tempDir("instructor_probe_notes").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("note: probe: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("of camera \"main\", student renders -1.0000 (off by 2)"), std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("the reference renders"), std::string::npos) << r.output;
+}
+
 }  // namespace sl

@@ -167,13 +167,17 @@ TEST(InstructorReport, SatFailuresAwayFromTheTablesOriginAreCalledItsPrecision) 
     EXPECT_EQ(frame.find(far), std::string::npos) << frame;
 }
 
-// Two real mutants (a Gaussian that mirrors at the border, an MSM without the moment bias):
-// the report says both in words.
-TEST(InstructorReport, ARealGradeNamesTheBorderAndTheMomentBias) {
+// Three real mutants (a Gaussian that mirrors at the border, an MSM without the moment bias, a
+// relativeDepth that does not clamp): the report says each in words, and the score table too.
+// The unclamped relativeDepth is the depth-ladder probe's (every moment map is right), not a
+// border rule (the ladder is one row of light depths, all of it "near the border").
+TEST(InstructorReport, ARealGradeNamesTheBorderTheMomentBiasAndTheDepthLadder) {
+    const fs::path mutants = test::root() / "tests/submissions/mutants";
     const fs::path sub = test::makeSubmission(
         "instructor_report_mutants",
-        {{"gaussian_blur.comp", test::readFile(test::root() / "tests/submissions/mutants/gaussian_edge_mirror/gaussian_blur.comp")},
-         {"msm.glsl", test::readFile(test::root() / "tests/submissions/mutants/msm_no_moment_bias/msm.glsl")}});
+        {{"gaussian_blur.comp", test::readFile(mutants / "gaussian_edge_mirror/gaussian_blur.comp")},
+         {"msm.glsl", test::readFile(mutants / "msm_no_moment_bias/msm.glsl")},
+         {"moments.glsl", test::readFile(mutants / "moments_unclamped_relative_depth/moments.glsl")}});
     const fs::path out = test::tempDir("instructor_report_mutants_out");
     auto g = test::grade("--reference live --scenes classic --submission " + sub.string(), out);
     ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
@@ -181,6 +185,15 @@ TEST(InstructorReport, ARealGradeNamesTheBorderAndTheMomentBias) {
     EXPECT_NE(page.find("classic (gaussian, moments_filtered)"), std::string::npos) << page;
     EXPECT_NE(page.find("check the border rule"), std::string::npos) << page;
     EXPECT_NE(page.find("the moment bias looks missing"), std::string::npos) << page;
+    const std::string ladder = "the depth-ladder probe finds 36 of its 75 light depths off, all "
+                               "outside [near, far]: relativeDepth must clamp";
+    EXPECT_NE(page.find("classic (moments): " + ladder), std::string::npos) << page;
+    EXPECT_EQ(page.find("moments_raw_depth_ladder): "), std::string::npos) << page;  // no frame
+    EXPECT_EQ(g.output("classic", "moments").rfind(ladder, 0), 0u) << g.output("classic", "moments");
+    EXPECT_NE(g.output("classic", "moments").find("every moment map within tolerance"), std::string::npos)
+        << g.output("classic", "moments");
+    EXPECT_NE(g.run.output.find("classic: " + ladder), std::string::npos) << g.run.output;
+    EXPECT_NE(g.run.output.find("  - classic (moments): " + ladder), std::string::npos) << g.run.output;
     for (const auto& l : links(page)) EXPECT_TRUE(fs::exists(out / "report" / l)) << l;
 }
 

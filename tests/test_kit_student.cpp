@@ -99,6 +99,37 @@ TEST(KitStudent, ManifestTestsNeedOnlyWhatTheKitHolds) {
         EXPECT_FALSE(kit.count(f)) << f;
 }
 
+// The pages a student reads, as the student kit ships them (grader::studentMarkdown), name no
+// file, test or command the kit does not have (a file in reference/, the oracles, the
+// submissions, a test it leaves out, a --gtest_filter): those lines are instructor blocks
+// (saying that a kit may have no reference/ is fine). Quick: no
+// kit is built (the test below checks README and handout in a built kit, and runs them).
+TEST(KitStudent, StudentDocsNameNothingTheKitLacks) {
+    // The test files the manifest leaves out.
+    const auto shipped = grader::studentKitFiles(test::root());
+    std::vector<std::string> dropped;
+    for (const auto& e : fs::directory_iterator(test::root() / "tests"))
+        if (e.is_regular_file() &&
+            std::find(shipped.begin(), shipped.end(), "tests/" + e.path().filename().string()) ==
+                shipped.end())
+            dropped.push_back("tests/" + e.path().filename().string());
+    for (const char* doc : {"README.md", "docs/handout.md", "docs/numerics.md", "docs/stage_contract.md"}) {
+        const std::string text = grader::studentMarkdown(test::readFile(test::root() / doc));
+        static const std::regex missing(
+            R"((^|[^A-Za-z_/])(reference/[A-Za-z_*]|tests/oracles|tests/submissions|--gtest_filter|shadowlab_tests|catalogue\.md|performance_log\.md))");
+        std::smatch m;
+        EXPECT_FALSE(std::regex_search(text, m, missing))
+                << doc << " (student kit) names " << m[2] << ": ..." << m.suffix().str().substr(0, 120);
+        for (const auto& name : dropped)
+            EXPECT_EQ(text.find(name), std::string::npos) << doc << " (student kit) names " << name;
+    }
+    // What the framework does with the stage files' preprocessor lines (shader_source.cpp;
+    // HostileErrorLines.LineAndExtensionDirectivesAreRefused): #line is refused, not prepended.
+    const std::string contract = test::readFile(test::root() / "docs/stage_contract.md");
+    EXPECT_NE(contract.find("`#line` and `#extension` are refused"), std::string::npos);
+    EXPECT_EQ(contract.find("and a `#line` directive"), std::string::npos);
+}
+
 TEST(KitStudent, TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand) {
     using Clock = std::chrono::steady_clock;
     const auto unpacked = test::unpackStudentKit(test::tempDir("student_kit"));

@@ -3,6 +3,9 @@
 // file is tested without touching this file. Also: --backend before and after the subcommand.
 #include "kit_test_support.h"
 
+#include <cctype>
+#include <set>
+
 namespace sl {
 namespace {
 
@@ -29,13 +32,15 @@ fs::path kitLookalike(const std::string& name) {
 
 TEST(ReadmeCommands, ExtractionFindsBlockAndInlineCommands) {
     const std::string md = "Run\n```sh\n./kit demo   # builds\n  # comment only\n"
-                           "build/shadowlab info\n```\nthen `build/shadowlab grade --submission\n"
+                           "build/shadowlab info\nxvfb-run -a build/shadowlab view --scene s.json  # no display\n"
+                           "```\nthen `build/shadowlab grade --submission\n"
                            "student --out g` and `probe moments`.\n";
     const auto c = test::documentedCommands(md);
-    ASSERT_EQ(c.size(), 3u) << testing::PrintToString(c);
+    ASSERT_EQ(c.size(), 4u) << testing::PrintToString(c);
     EXPECT_EQ(c[0], "./kit demo");
     EXPECT_EQ(c[1], "build/shadowlab info");
-    EXPECT_EQ(c[2], "build/shadowlab grade --submission student --out g");
+    EXPECT_EQ(c[2], "xvfb-run -a build/shadowlab view --scene s.json");
+    EXPECT_EQ(c[3], "build/shadowlab grade --submission student --out g");
 }
 
 TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
@@ -51,6 +56,8 @@ TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
     EXPECT_EQ(failures, "");
     std::cout << "ran " << commands.size() << " documented commands\n" << skipped;
     EXPECT_TRUE(fs::exists(dir / "out/classic/final.png"));
+    if (skipped.find("no xvfb-run") == std::string::npos)  // README: view --screenshot
+        EXPECT_TRUE(fs::exists(dir / "out/view.png"));
     EXPECT_GT(fs::file_size(dir / "cases.csv"), 1000u);
     // ./kit wrote into the scratch folder; the grades graded the stubs (the stage files taken).
     EXPECT_TRUE(fs::exists(dir / "out/demo/student/classic/final.png"));
@@ -58,6 +65,36 @@ TEST(ReadmeCommands, EveryReadmeAndHandoutCommandRunsAsWritten) {
     const std::string results = test::readFile(dir / "out/grade/results.json");
     EXPECT_NE(results.find("not implemented"), std::string::npos) << results.substr(0, 2000);
     EXPECT_EQ(results.find("not submitted"), std::string::npos) << results.substr(0, 2000);
+}
+
+// A link to a section ("handout.md#grading-yourself-kit-check", "#the-report") finds a heading
+// of that page whose GitHub anchor it is (lower case, punctuation dropped, spaces as hyphens).
+TEST(ReadmeCommands, LinksToASectionFindItsHeading) {
+    auto anchors = [](const fs::path& page) {
+        std::set<std::string> out;
+        std::istringstream in(test::readFile(page));
+        for (std::string line; std::getline(in, line);) {
+            if (line.rfind("#", 0) != 0) continue;
+            std::string title = line.substr(line.find_first_not_of('#')), slug;
+            for (unsigned char c : title)
+                if (std::isalnum(c) || c == '-' || c == '_' || c >= 0x80) slug += char(std::tolower(c));
+                else if (c == ' ') slug += '-';
+            out.insert(slug.substr(slug.find_first_not_of('-')));
+        }
+        return out;
+    };
+    int links = 0;
+    for (const char* doc : {"README.md", "docs/handout.md", "docs/grading.md", "docs/numerics.md",
+                            "docs/stage_contract.md"}) {
+        const fs::path page = test::root() / doc;
+        const std::string text = test::readFile(page);
+        static const std::regex link(R"(\]\(([^)#:]*)#([^)]+)\))");
+        for (std::sregex_iterator it(text.begin(), text.end(), link), end; it != end; ++it, ++links) {
+            const fs::path target = (*it)[1].str().empty() ? page : page.parent_path() / (*it)[1].str();
+            EXPECT_TRUE(anchors(target).count((*it)[2].str())) << doc << ": " << (*it)[0] << " finds no heading";
+        }
+    }
+    EXPECT_GE(links, 3);
 }
 
 // README: `build/shadowlab render ... --backend egl` (issue 7 §1): the option after the

@@ -129,6 +129,10 @@ TEST(Report, AutoFilterTakesTheGaussianWhenTheSatIsAStub) {
     auto forced = report(solution.string(), dir / "forced", 64, " --filter sat");
     ASSERT_EQ(forced.exitCode, 0) << forced.output;
     EXPECT_NE(forced.output.find("sat.comp"), std::string::npos) << forced.output;
+    // A chosen filter says why (it was chosen), never "(..., sat filter: )".
+    EXPECT_NE(forced.output.find(", sat filter: chosen with --filter sat)"), std::string::npos) << forced.output;
+    EXPECT_NE(test::readFile(dir / "forced/index.html").find("Filter: sat (chosen with --filter sat)"),
+              std::string::npos);
 }
 
 }  // namespace sl

@@ -97,7 +97,8 @@ TEST(Viewer, WindowShowsTheImageRenderWrites) {
     VirtualDisplay display;
     fs::path dir = test::tempDir("viewer");
     const std::string scene = test::scenePath("classic").string();
-    Image window = viewShot(display, "--scene " + scene + " --no-panels --frames 2", dir / "window.png");
+    // --screenshot alone ends the run (no --frames), into a folder it makes.
+    Image window = viewShot(display, "--scene " + scene + " --no-panels", dir / "new/window.png");
     Image file = renderPng(scene, dir / "render", "final");
     ASSERT_EQ(window.width, file.width);  // --no-panels: the image alone
     ASSERT_EQ(window.height, file.height);

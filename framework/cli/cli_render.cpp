@@ -33,6 +33,15 @@ std::string specFolder(std::string spec) {
     return spec;
 }
 
+// probeFailures words a line for the reference ("..., the reference renders 0.5000 ..."), whose
+// render has to meet the probes; a note on another solution's render names that solution.
+std::string probeNote(std::string line, const std::string& solution) {
+    const std::string reference = ", the reference renders ";
+    if (const size_t at = line.find(reference); at != std::string::npos)
+        line.replace(at, reference.size(), ", " + solution + " renders ");
+    return line;
+}
+
 int runRender(const std::string& scenePath, const std::string& solution,
               const std::string& outDir, const std::string& backend, bool explain,
               const std::string& techniques) {
@@ -52,7 +61,8 @@ int runRender(const std::string& scenePath, const std::string& solution,
     if (specs.empty()) specs.push_back("");
     for (const std::string& spec : specs) {
         Scene scene = loaded;
-        fs::path out = outDir;
+        // Without --out, one folder per scene: a render never spills loose files into out/.
+        fs::path out = outDir.empty() ? fs::path("out") / loaded.name : fs::path(outDir);
         if (!spec.empty()) {
             auto [technique, parameters] = parseTechniqueSpec(spec);
             overrideTechnique(scene.shadow, technique, parameters);
@@ -77,7 +87,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
                                  ") does not match " + std::to_string(failures.size()) +
                                  " probe(s):" + all);
             }
-            for (const auto& f : failures) std::cout << "note: probe: " << f << "\n";
+            for (const auto& f : failures) std::cout << "note: probe: " << probeNote(f, solution) << "\n";
             if (failures.empty())
                 std::cout << "probes: all " << scene.probes.size() << " hold\n";
         }
@@ -93,7 +103,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
 void addRenderCommands(CLI::App& app, Context& ctx) {
     auto* render = app.add_subcommand("render", "render a scene through a solution");
     struct RenderArgs {
-        std::string scene, solution = defaultSolution(), out = "out";
+        std::string scene, solution = defaultSolution(), out;
         bool explain = false;
         std::string technique;
     };
@@ -101,7 +111,7 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
     render->add_option("--scene", args->scene, "scene JSON file")->required();
     render->add_option("--solution", args->solution,
                        "reference, student, or a folder of stage files");
-    render->add_option("--out", args->out, "output folder");
+    render->add_option("--out", args->out, "output folder (default: out/<scene name>)");
     render->add_flag("--explain", args->explain, "print the pass plan and the time of each pass");
     render->add_option("--technique", args->technique,
                        "override the scene's technique: T[,T2,...] or all; T may carry parameters, "

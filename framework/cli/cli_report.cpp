@@ -94,8 +94,10 @@ bool mentionsFilter(const std::vector<std::string>& notes, FilterKind filter) {
 // by a render of the first step at a tiny size, which notes each stubbed stage.
 FilterKind chooseFilter(Renderer& renderer, const Scene& first, const std::string& wanted,
                         std::string& why) {
-    if (wanted == "sat") return FilterKind::Sat;
-    if (wanted == "gaussian") return FilterKind::Gaussian;
+    if (wanted == "sat" || wanted == "gaussian") {
+        why = "chosen with --filter " + wanted;
+        return wanted == "sat" ? FilterKind::Sat : FilterKind::Gaussian;
+    }
     const FilterKind own = first.shadow.filter;
     const FilterKind other = own == FilterKind::Sat ? FilterKind::Gaussian : FilterKind::Sat;
     for (FilterKind f : {own, other}) {

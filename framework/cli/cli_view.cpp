@@ -4,7 +4,7 @@
 // a setting re-plans and re-renders. Keys: 1-4 pick the image, arrows orbit the camera,
 // R reloads the shaders (edit, press R, look), Esc quits.
 // Scriptable (tests, screenshots): each --set key=value is applied on its own frame from the
-// second one on, exactly as the panel applies a change; --frames/--screenshot end the run.
+// second one on, exactly as the panel applies a change; --frames or --screenshot end the run.
 #include "cli_commands.h"
 #include "editable_scene.h"
 #include "glfw_window.h"
@@ -92,7 +92,9 @@ struct ViewArgs {
     bool noPanels = false;
 };
 
-int runView(const ViewArgs& a) {
+int runView(ViewArgs a) {
+    // A screenshot without --frames: one frame per --set and one more, then the PNG and quit.
+    if (!a.screenshot.empty() && a.frames <= 0) a.frames = int(a.sets.size()) + 2;
     EditableScene edits(a.scene);
     ViewOptions options;
     try {  // every --set is checked before a window opens: a typo fails at once, display or not
@@ -190,6 +192,8 @@ int runView(const ViewArgs& a) {
             gl::PixelStorei(GL_PACK_ALIGNMENT, 1);
             gl::ReadPixels(0, 0, shot.width, shot.height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
             for (size_t i = 0; i < bytes.size(); ++i) shot.pixels[i] = bytes[i] / 255.0f;
+            if (const fs::path dir = fs::path(a.screenshot).parent_path(); !dir.empty())
+                fs::create_directories(dir);
             writePngPreview(shot, a.screenshot, false);
             std::cout << "wrote " << a.screenshot << "\n";
         }
@@ -243,7 +247,9 @@ void addViewCommand(CLI::App& app, Context& ctx) {
     view->add_option("--scene", a->scene, "scene JSON file")->required();
     view->add_option("--solution", a->solution, "reference, student, or a folder");
     view->add_option("--frames", a->frames, "quit after this many frames (0: when closed)");
-    view->add_option("--screenshot", a->screenshot, "PNG of the window's last frame (with --frames)");
+    view->add_option("--screenshot", a->screenshot,
+                     "PNG of the window's last frame, then quit (without --frames: after one frame "
+                     "per --set and one more)");
     view->add_option("--set", a->sets,
                      "key=value, one per frame from the second, as the panel would: a scene key "
                      "(shadow.filter.type=sat, shadow.filter.radius=8, lights.0.size=0.5) or "
