@@ -150,14 +150,15 @@ TEST(InstructorProbes, RenderChecksTheProbesOfTheReference) {
 }
 
 // Another solution's render only hears about the probes, in notes that name that solution and
-// its value (the stubs: -1), not the reference.
+// its value (the stubs': G is -3 where relativeDepth and msm.glsl are both stubs), not the
+// reference.
 TEST(InstructorProbes, RenderOfAnotherSolutionNamesItInTheProbeNotes) {
     auto r = test::runCommand(test::shadowlabBinary() + " render --solution student --scene " +
                               test::scenePath("classic").string() + " --out " +
                               test::tempDir("instructor_probe_notes").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("note: probe: "), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("of camera \"main\", student renders -1.0000 (off by 2)"), std::string::npos)
+    EXPECT_NE(r.output.find("of camera \"main\", student renders -3.0000 (off by 4)"), std::string::npos)
         << r.output;
     EXPECT_EQ(r.output.find("the reference renders"), std::string::npos) << r.output;
 }
