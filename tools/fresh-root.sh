@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # fresh-root.sh RELEASE [ROOT]: the README's two commands on a bare Debian, as a new user runs
-# them. Makes a minimal root with debootstrap (RELEASE: bookworm = Debian 12, trixie = Debian 13;
-# kept in ROOT, default /var/tmp/shadowlab-fresh-RELEASE, and reused while its base is intact),
-# copies the kit's committed tree (git archive HEAD) into a clean /root/shadowlab there, and runs
-# `./kit demo` then `./kit test` as root in a chroot: ./kit must install everything itself.
+# them. Makes a minimal root with debootstrap (RELEASE: bookworm = Debian 12, trixie = Debian 13)
+# in ROOT (default /var/tmp/shadowlab-fresh-RELEASE), copies the kit's committed tree (git
+# archive HEAD) into /root/shadowlab there, and runs `./kit demo` then `./kit test` as root in a
+# chroot: ./kit must install everything itself.
 # A failure names the release, the command and its last lines. Needs root and debootstrap.
 set -euo pipefail
 release="${1:?usage: tools/fresh-root.sh bookworm|trixie [ROOT]}"
@@ -12,23 +12,36 @@ kit="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mirror="${SHADOWLAB_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 say() { printf '[fresh-root %s] %s\n' "$release" "$*"; }
 
-if [ ! -x "$root/usr/bin/apt-get" ] || [ ! -f "$root/.fresh-root-base" ]; then
-  rm -rf "$root"
+# The bare base is made once and kept as a tarball beside ROOT; every run starts from a fresh
+# copy of it, so ./kit installs every package every time (debootstrap's network once).
+base="$root.base.tar"
+# Nothing may stay mounted inside ROOT before it is removed (a killed run leaves /dev bound).
+unmount_all() {
+  local m
+  for m in $(awk -v r="$root/" 'index($2, r) == 1 { print $2 }' /proc/mounts | sort -r); do
+    umount -l "$m" 2>/dev/null || true
+  done
+  ! awk -v r="$root/" 'index($2, r) == 1 { found = 1 } END { exit !found }' /proc/mounts ||
+    { say "something is still mounted under $root: not removing it"; exit 1; }
+}
+unmount_all
+if [ ! -s "$base" ]; then
+  rm -rf --one-file-system "$root"
   say "debootstrap --variant=minbase $release $root"
   debootstrap --variant=minbase "$release" "$root" "$mirror" >"$root.debootstrap.log" 2>&1 ||
     { say "debootstrap failed:"; tail -20 "$root.debootstrap.log"; exit 1; }
-  touch "$root/.fresh-root-base"
+  tar -C "$root" -cf "$base.tmp" . && mv "$base.tmp" "$base"
 fi
-# A reused root keeps the packages ./kit installed before (the check is that it installs them,
-# which the first run proves); the kit itself is always a clean copy.
-rm -rf "$root/root/shadowlab"
+rm -rf --one-file-system "$root"
+mkdir -p "$root"
+tar -C "$root" -xf "$base"
 mkdir -p "$root/root/shadowlab"
 git -C "$kit" archive HEAD | tar -x -C "$root/root/shadowlab"
 cp /etc/resolv.conf "$root/etc/resolv.conf"
 
 mounts=()
 cleanup() { for ((i=${#mounts[@]}-1; i>=0; i--)); do umount -l "${mounts[$i]}" 2>/dev/null || true; done; }
-trap cleanup EXIT
+trap cleanup EXIT INT TERM
 for m in proc sys dev dev/pts dev/shm; do
   mkdir -p "$root/$m"
   case $m in
