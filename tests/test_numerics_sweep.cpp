@@ -1,11 +1,15 @@
 // Properties of momentShadowIntensity over 10⁶ generated cases (docs/numerics.md, "Sweep"):
 // 250 000 moment vectors of random depth distributions (mixtures of point masses and
 // uniform intervals in [0, 1], a quarter of them perturbed adversarially), each at 4 sorted
-// fragment depths. Checked for the reference on the GPU (one probe dispatch) and for its
-// float32 CPU mirror: G finite and in [0, 1]; monotone in zf; ~0 in front of every occluder;
-// within a stated bound of the exact 4MSM value; GPU and mirror agree.
+// fragment depths (msm_sweep.h). Checked for the reference on the GPU (one probe dispatch) and
+// for its float32 CPU mirror: G finite and in [0, 1]; monotone in zf; ~0 in front of every
+// occluder; within a stated bound of the exact 4MSM value; GPU and mirror agree. And the
+// solver-free checks of `shadowlab probe msm --sweep` (any solution, the student kit too):
+// the reference and the correct variants pass them, the mutants fail them, a stub is named.
 #include "gl_test_support.h"
 #include "msm_exact.h"
+#include "msm_robustness.h"
+#include "msm_sweep.h"
 #include "oracles/msm_float_mirror.h"
 #include "probe.h"
 #include "probe_cases.h"
@@ -17,70 +21,12 @@
 namespace sl {
 namespace {
 
-constexpr int kVectors = 250000, kDepthsPerVector = 4;
 constexpr float kSweepAlpha = kReferenceMomentBias;
-// Stated bounds (docs/numerics.md). Monotone: G may drop by this much from rounding.
-constexpr float kSweepMonotoneSlack = 1e-4f;
-// In front of every occluder by >= kFrontMargin, the exact bound is <= α/2 (the bias's mass
-// at depth 0); float32 may add rounding.
-// float32 adds ~3e-5 for the far plane alone (b = (1, 1, 1, 1)): G <= 1e-4, invisible in 8 bits.
-constexpr float kFrontMargin = 0.01f, kFrontMax = 1e-4f;
+// Stated bounds for the reference (docs/numerics.md; the solver-free ones: msm_sweep.h).
+// Monotone: the reference's G drops by at most this much (the robustness stage allows 1e-3).
+constexpr double kReferenceMonotoneSlack = 1e-4;
 // Versus the exact value: kExactBase + 4·(float sensitivity of the case) (msm_exact.h).
 constexpr double kExactBase = 2e-4;
-
-struct Cases {
-    std::vector<glm::vec4> b;
-    std::vector<float> zf;
-    std::vector<float> minDepth;  // per vector: the nearest occluder depth
-    std::vector<char> perturbed;  // per vector
-};
-
-Cases generate() {
-    Cases c;
-    std::mt19937_64 rng(20150225);
-    std::uniform_real_distribution<double> U(0.0, 1.0);
-    for (int v = 0; v < kVectors; ++v) {
-        const int parts = 1 + int(U(rng) * 4);
-        glm::dvec4 b(0.0);
-        double weightSum = 0.0, zmin = 1.0;
-        std::vector<std::pair<double, double>> ws;
-        for (int p = 0; p < parts; ++p) ws.push_back({U(rng) + 1e-3, 0.0}), weightSum += ws.back().first;
-        for (auto& [w, unused] : ws) {
-            w /= weightSum;
-            const double kind = U(rng);
-            if (kind < 0.5) {  // a point mass; sometimes exactly at 0 or 1
-                const double z = kind < 0.05 ? 0.0 : kind < 0.1 ? 1.0 : U(rng);
-                b += w * glm::dvec4(z, z * z, z * z * z, z * z * z * z);
-                zmin = std::min(zmin, z);
-            } else {  // a uniform interval [a, a + len], len log-uniform in [1e-5, 1]
-                const double len = std::pow(10.0, -5.0 * U(rng));
-                const double a = U(rng) * (1.0 - len);
-                for (int k = 1; k <= 4; ++k)
-                    b[k - 1] += w * (std::pow(a + len, k + 1) - std::pow(a, k + 1)) / ((k + 1) * len);
-                zmin = std::min(zmin, a);
-            }
-        }
-        glm::vec4 bf(b);
-        const bool perturb = U(rng) < 0.25;
-        if (perturb) {  // adversarial: up to ±64 ulp per channel, or ±1e-6 absolute
-            for (int k = 0; k < 4; ++k) {
-                const int ulps = int((U(rng) - 0.5) * 128);
-                if (U(rng) < 0.5)
-                    for (int i = 0; i < std::abs(ulps); ++i) bf[k] = std::nextafter(bf[k], ulps > 0 ? 2.0f : -1.0f);
-                else
-                    bf[k] = std::max(0.0f, bf[k] + float((U(rng) - 0.5) * 2e-6));
-            }
-        }
-        float zf[kDepthsPerVector] = {float(zmin) - kFrontMargin - float(U(rng)) * 0.05f,
-                                      float(U(rng) * 1.1 - 0.05), float(U(rng) * 1.1 - 0.05),
-                                      float(U(rng) * 1.1 - 0.05)};
-        std::sort(zf, zf + kDepthsPerVector);
-        for (float z : zf) c.b.push_back(bf), c.zf.push_back(z);
-        c.minDepth.push_back(float(zmin));
-        c.perturbed.push_back(perturb);
-    }
-    return c;
-}
 
 double seconds(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
@@ -90,7 +36,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 TEST(NumericsSweep, MillionCasesOnGpuAndCpuMirror) {
     const auto start = std::chrono::steady_clock::now();
-    const Cases c = generate();
+    const MsmSweepCases c = generateMsmSweep();
     const size_t n = c.b.size();
     ASSERT_GE(n, 1000000u);
     const double tGenerate = seconds(start);
@@ -118,7 +64,7 @@ TEST(NumericsSweep, MillionCasesOnGpuAndCpuMirror) {
     std::vector<float> cpu(n);
     for (size_t i = 0; i < n; ++i) cpu[i] = mirror::momentShadowIntensity(c.b[i], c.zf[i], kSweepAlpha);
     for (size_t i = 0; i < n; ++i) {
-        const size_t v = i / kDepthsPerVector;
+        const size_t v = i / kMsmSweepDepthsPerVector;
         const double exact = exactMomentShadowIntensity(glm::dvec4(c.b[i]), c.zf[i], kSweepAlpha);
         exactChecked += std::isfinite(exact);
         double sensitivity = -1;  // computed only where needed (18 exact solves)
@@ -130,9 +76,9 @@ TEST(NumericsSweep, MillionCasesOnGpuAndCpuMirror) {
             const float g = side == 0 ? gpu[i] : cpu[i];
             const char* who = side == 0 ? "GPU" : "CPU mirror";
             if (!(std::isfinite(g) && g >= 0.0f && g <= 1.0f)) ++bad[side], note(std::string(who) + " not in [0,1]", i, g);
-            if (i % kDepthsPerVector && g < (side == 0 ? gpu[i - 1] : cpu[i - 1]) - kSweepMonotoneSlack)
+            if (i % kMsmSweepDepthsPerVector && g < (side == 0 ? gpu[i - 1] : cpu[i - 1]) - kReferenceMonotoneSlack)
                 ++nonMonotone[side], note(std::string(who) + " non-monotone", i, g);
-            if (c.zf[i] <= c.minDepth[v] - kFrontMargin && !c.perturbed[v] && g > kFrontMax)
+            if (c.zf[i] <= c.minDepth[v] - kSweepFrontMargin && !c.perturbed[v] && g > kSweepFrontMax)
                 ++frontLeak[side], note(std::string(who) + " G > 0 in front of every occluder", i, g);
             if (std::isfinite(exact)) {
                 const double err = std::abs(g - exact);
@@ -171,6 +117,113 @@ TEST(NumericsSweep, MillionCasesOnGpuAndCpuMirror) {
     EXPECT_EQ(disagree, 0u) << firstProblem;
     EXPECT_GT(exactChecked, n / 2);
     EXPECT_LT(seconds(start), 60.0);
+}
+
+}  // namespace sl
+
+namespace sl {
+namespace {
+
+std::string sweepSubmission(const std::string& rel) { return (test::root() / "tests/submissions" / rel).string(); }
+
+}  // namespace
+
+// The checks `probe msm --sweep` makes without a solver, on the same 10⁶ cases: every correct
+// solve passes them (the reference, and the msm alternatives the grader gives full marks), every
+// msm mutant and the unguarded variant fails them, and a stub is told apart.
+TEST(NumericsSweep, SolverFreeChecksPassCorrectSolutionsAndCatchMutants) {
+    test::sharedContext();
+    const MsmSweepCases c = generateMsmSweep();
+    auto sweep = [&](const std::string& solution) {
+        const auto g = probeMomentShadowIntensity(test::library(solution), c.b, c.zf, kSweepAlpha);
+        const MsmSweepReport r = checkMsmSweep(c, g, kSweepAlpha);
+        std::printf("%s:\n%s", solution.c_str(), msmSweepSummary(r, c, g, kSweepAlpha, 2).c_str());
+        return r;
+    };
+    const MsmSweepReport ref = sweep("reference");
+    EXPECT_EQ(ref.failures(), 0u);
+    EXPECT_LE(ref.worstDrop, kReferenceMonotoneSlack);  // docs/numerics.md quotes 1e-4
+    EXPECT_GT(ref.checkedCantelli, c.b.size() / 2);
+    EXPECT_GT(ref.checkedFront, c.b.size() / 5);
+    EXPECT_FALSE(ref.stub);
+    for (const char* alt : {"msm_cholesky_sqrt", "msm_float64", "msm_pivot_floor_1e-11", "msm_pivot_floor_1e-8",
+                            "msm_textbook_quadratic"})
+        EXPECT_EQ(sweep(sweepSubmission(std::string("alternatives/") + alt)).failures(), 0u) << alt;
+    for (const char* mutant : {"mutants/msm_bias_mix_reversed", "mutants/msm_case_formulas_mixed",
+                               "mutants/msm_forward_substitution_sign", "mutants/msm_g_inverted",
+                               "mutants/msm_no_moment_bias", "mutants/msm_roots_swapped",
+                               "mutants/msm_weights_moment_index_shift", "fragile/unguarded"})
+        EXPECT_GT(sweep(sweepSubmission(mutant)).failures(), 0u) << mutant;
+    // The no-bias mutant is the subtle one: G > 1e-4 in front of every occluder.
+    EXPECT_GT(sweep(sweepSubmission("mutants/msm_no_moment_bias")).frontLeak, 0u);
+    const MsmSweepReport stub = sweep("student");
+    EXPECT_TRUE(stub.stub);
+    EXPECT_EQ(stub.failures(), 0u);
+}
+
+// The two-moment bounds the sweep checks hold the exact 4MSM value (it is the smallest weight
+// in front of zf over the distributions with all four moments, so it lies between them).
+TEST(NumericsSweep, CantelliBoundsHoldTheExactValue) {
+    const MsmSweepCases c = generateMsmSweep(2000, 7);
+    size_t checked = 0, tight = 0;
+    for (size_t i = 0; i < c.b.size(); ++i) {
+        if (c.perturbed[i / kMsmSweepDepthsPerVector]) continue;
+        for (float zf : {c.zf[i], c.zf[i] + 0.1f, c.zf[i] - 0.1f}) {
+            const double exact = exactMomentShadowIntensity(glm::dvec4(c.b[i]), zf, kSweepAlpha);
+            if (!std::isfinite(exact)) continue;
+            const CantelliBounds cb = msmCantelliBounds(c.b[i], zf, kSweepAlpha);
+            ++checked;
+            ASSERT_GE(exact, cb.lower - 1e-9) << i << " zf " << zf;
+            ASSERT_LE(exact, cb.upper + 1e-9) << i << " zf " << zf;
+            tight += cb.lower > 0.5 || cb.upper < 0.5;  // the bounds decide something
+        }
+    }
+    EXPECT_GT(checked, 4000u);
+    EXPECT_GT(tight, checked / 5);
+    // By hand: depth 0.5 only, alpha 0: mean 0.5, variance 0; zf = 0.6 → lower bound 1.
+    EXPECT_NEAR(msmCantelliBounds({0.5f, 0.25f, 0.125f, 0.0625f}, 0.6f, 0.0f).lower, 1.0, 1e-6);
+    EXPECT_NEAR(msmCantelliBounds({0.5f, 0.25f, 0.125f, 0.0625f}, 0.4f, 0.0f).upper, 0.0, 1e-6);
+}
+
+// The command: a summary that says what it checks, the failing cases to a file that `probe msm
+// --input` takes back, and a stub named as not implemented.
+TEST(NumericsSweep, ProbeMsmSweepCommandSummarisesAnySolution) {
+    const std::string bin = test::shadowlabBinary();
+    const fs::path dir = test::tempDir("probe_msm_sweep");
+    auto r = test::runCommand(bin + " probe msm --sweep --solution reference");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* s : {"1000000 cases", "need no 4MSM solver", "G finite, in [0, 1]", "monotone in zf",
+                          "in front of every occluder", "Cantelli", "no failures"})
+        EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+    r = test::runCommand(bin + " probe msm --sweep --solution student");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("student/msm.glsl: momentShadowIntensity: not implemented yet"), std::string::npos)
+        << r.output;
+    const std::string mutant = sweepSubmission("mutants/msm_roots_swapped");
+    const fs::path fails = dir / "fails.csv", again = dir / "again.csv";
+    r = test::runCommand(bin + " probe msm --sweep --vectors 20000 --seed 3 --solution " + mutant + " --out " +
+                         fails.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("80000 cases"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("failures; the first 12"), std::string::npos) << r.output;
+    r = test::runCommand(bin + " probe msm --solution " + mutant + " --input " + fails.string() + " --out " +
+                         again.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    // Probing the failing rows gives the same G: the column G of the sweep's file, then the probe's.
+    std::istringstream in(test::readFile(again));
+    std::string line;
+    size_t rows = 0;
+    std::getline(in, line);
+    EXPECT_EQ(line, "check,m1,m2,m3,m4,zf,G,bound,G");
+    while (std::getline(in, line)) {
+        const size_t last = line.rfind(','), before = line.rfind(',', line.rfind(',', last - 1) - 1);
+        const std::string swept = line.substr(before + 1, line.find(',', before + 1) - before - 1);
+        EXPECT_EQ(std::stof(swept), std::stof(line.substr(last + 1))) << line;
+        ++rows;
+    }
+    EXPECT_GT(rows, 100u);
+    r = test::runCommand(bin + " probe moments --sweep --solution reference");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
 }
 
 }  // namespace sl

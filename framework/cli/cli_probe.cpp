@@ -3,6 +3,7 @@
 // and writes the same rows with the results appended. `--generate NAME` writes a named case
 // set's inputs instead (probe_cases.h). The help text below is the user documentation.
 #include "cli_commands.h"
+#include "cli_probe.h"
 #include "depth_ladder.h"
 #include "gl_context.h"
 #include "image_io.h"
@@ -10,6 +11,7 @@
 #include "paths.h"
 #include "probe.h"
 #include "probe_cases.h"
+#include "probe_csv.h"
 
 #include <algorithm>
 #include <cmath>
@@ -41,6 +43,23 @@ name, pass through unchanged; the results are appended as the last columns):
               + 0.02*sin(x/7)*cos(y/11), moments (z, z^2, z^3, z^4)). Texel units, texel
               i covers [i, i+1), y counts up from the bottom row (as GL stores it); the
               expected values are the exact (double) box means of that map.
+  gaussian    [map,]x,y,m1,m2,m3,m4 -> b1,b2,b3,b4, expected_b1..expected_b4, max_error
+              Each map (the rows with the same `map`; without that column the whole file
+              is one map) is an RGBA image, one row per texel (x, y from 0; every texel
+              once; y counts up from the bottom row). The solution's gaussian_blur.comp
+              runs on it as a render runs it: --passes xy (along x, then along y; default),
+              x or y, with --radius r (default 4) and --sigma (default r/2). The expected
+              values are the contract's blur in double (w_k ~ exp(-k^2/2 sigma^2),
+              w0 + 2*sum w_k = 1, clamp to edge). A summary (stderr, or stdout with --out)
+              gives each map's worst error against what float rounding allows,
+              passes*(2r + 3)*2^-24*max|m|, and names a stub (-1) "not implemented yet".
+
+msm --sweep: the property sweep (docs/numerics.md): 250 000 generated moment vectors
+  (--vectors, --seed) x 4 fragment depths, in one dispatch, checked against bounds every
+  correct G meets and that need no 4MSM solver: G finite and in [0, 1], monotone in zf,
+  ~0 in front of every occluder, within the mean/variance (Cantelli) bounds. It prints a
+  summary and the first failures; --out writes every failing case (columns check,
+  m1..m4, zf, G, bound: `probe msm --input` takes that file back).
 
 --generate NAME writes a case set's inputs (to --out, or stdout) instead of probing:
   msm: the hard-case catalogue's sets (`catalogue` = all of them; columns case, m1..m4,
@@ -51,123 +70,16 @@ name, pass through unchanged; the results are appended as the last columns):
   inside and behind three depth ranges, with the exact moments).
   sat-lookup: `boxes` (sizes 1 .. N texels at the origin, the centre and the far corner,
   boxes across the map's border, fractional sizes; N = --map-size, or the --map's width).
+  gaussian: `impulse`, `edge` (a step at each border, one per channel), `constant`,
+  `random`, or `all`: maps at 7x5, 67x3, 3x67 and 1x1 (work groups partly outside the
+  image), or at --size WxH only.
 
 Example:
   shadowlab probe msm --generate catalogue --out cases.csv
-  shadowlab probe msm --solution student --input cases.csv --out results.csv)";
-
-// A CSV error: "file:line: column 'name': message".
-struct CsvError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-struct Table {
-    std::vector<std::string> header;
-    std::vector<std::vector<std::string>> rows;
-    std::vector<int> lineOf;  // file line of each row (1-based; the header is line 1)
-};
-
-std::vector<std::string> splitFields(const std::string& line) {
-    std::vector<std::string> fields;
-    std::stringstream ss(line);
-    std::string f;
-    while (std::getline(ss, f, ',')) fields.push_back(f);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    return fields;
-}
-
-std::string trim(const std::string& s) {
-    const size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
-    return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
-
-Table readCsv(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw CsvError(path + ": cannot open the input file");
-    Table t;
-    std::string line;
-    int lineNo = 0;
-    while (std::getline(in, line)) {
-        ++lineNo;
-        if (trim(line).empty()) continue;
-        auto fields = splitFields(line);
-        for (auto& f : fields) f = trim(f);
-        if (t.header.empty()) {
-            t.header = fields;
-            continue;
-        }
-        if (fields.size() != t.header.size())
-            throw CsvError(path + ":" + std::to_string(lineNo) + ": " + std::to_string(fields.size()) +
-                           " fields, but the header has " + std::to_string(t.header.size()));
-        t.rows.push_back(fields);
-        t.lineOf.push_back(lineNo);
-    }
-    if (t.header.empty()) throw CsvError(path + ":1: empty file (a header row is required)");
-    return t;
-}
-
-// The numeric columns `names` of every row, in that order.
-std::vector<std::vector<float>> numericColumns(const Table& t, const std::string& path,
-                                               const std::vector<std::string>& names) {
-    std::vector<int> index;
-    for (const auto& n : names) {
-        int found = -1;
-        for (size_t i = 0; i < t.header.size(); ++i)
-            if (t.header[i] == n) found = int(i);
-        if (found < 0) {
-            std::string all;
-            for (const auto& m : names) all += (all.empty() ? "" : ",") + m;
-            throw CsvError(path + ":1: column '" + n + "' is missing (this function needs " + all + ")");
-        }
-        index.push_back(found);
-    }
-    std::vector<std::vector<float>> values;
-    for (size_t r = 0; r < t.rows.size(); ++r) {
-        std::vector<float> v;
-        for (size_t k = 0; k < names.size(); ++k) {
-            const std::string& s = t.rows[r][size_t(index[k])];
-            char* end = nullptr;
-            const float x = std::strtof(s.c_str(), &end);
-            if (s.empty() || *end != '\0')
-                throw CsvError(path + ":" + std::to_string(t.lineOf[r]) + ": column '" + names[k] +
-                               "' (column " + std::to_string(index[k] + 1) + "): '" + s +
-                               "' is not a number");
-            v.push_back(x);
-        }
-        values.push_back(std::move(v));
-    }
-    return values;
-}
-
-std::string csvNumber(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    return buf;
-}
-
-// Writes the table with `added` columns appended (one vector of values per row).
-void writeCsv(const std::string& path, const Table& t, const std::vector<std::string>& added,
-              const std::vector<std::vector<double>>& values) {
-    std::ofstream fileOut;
-    if (!path.empty()) {
-        fileOut.open(path);
-        if (!fileOut) throw std::runtime_error(path + ": cannot write the output file");
-    }
-    std::ostream& out = path.empty() ? std::cout : fileOut;
-    auto line = [&](const std::vector<std::string>& fields) {
-        for (size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << fields[i];
-        out << "\n";
-    };
-    std::vector<std::string> head = t.header;
-    head.insert(head.end(), added.begin(), added.end());
-    line(head);
-    for (size_t r = 0; r < t.rows.size(); ++r) {
-        std::vector<std::string> row = t.rows[r];
-        if (r < values.size())
-            for (double v : values[r]) row.push_back(csvNumber(v));
-        line(row);
-    }
-}
+  shadowlab probe msm --solution student --input cases.csv --out results.csv
+  shadowlab probe gaussian --generate all --out maps.csv
+  shadowlab probe gaussian --solution student --input maps.csv --radius 4 --out blurred.csv
+  shadowlab probe msm --solution student --sweep)";
 
 Image syntheticMomentMap(int n) {
     Image img(n, n, 4);
@@ -244,21 +156,17 @@ Table generate(const std::string& function, const std::string& name, int mapSize
     } else {
         throw std::invalid_argument("no case set '" + name + "' for " + function +
                                     " (msm: catalogue, zf-ladder or a set in `probe --help`; "
-                                    "moments: depth-ladder; sat-lookup: boxes)");
+                                    "moments: depth-ladder; sat-lookup: boxes; gaussian: "
+                                    "impulse, edge, constant, random, all)");
     }
-    for (auto& row : t.rows)  // no field may split into CSV fields (no quoting)
-        for (auto& field : row)
-            for (char& ch : field) if (ch == ',') ch = ';';
+    sanitizeFields(t);  // no field may split into CSV fields (no quoting)
     return t;
 }
 
-struct ProbeArgs {
-    std::string function, solution = defaultSolution(), input, out, generate, map;
-    float alpha = kReferenceMomentBias;
-    int mapSize = 1024;
-};
-
 int runProbe(const ProbeArgs& a, const std::string& backend) {
+    if (a.sweep && a.function != "msm") throw std::invalid_argument("--sweep is for probe msm");
+    if (a.sweep) return runMsmSweep(a, backend);
+    if (a.function == "gaussian") return runGaussianProbe(a, backend);
     if (!a.generate.empty()) {
         // With --map, the boxes fit that map.
         const int size = a.map.empty() || a.function != "sat-lookup" ? a.mapSize : readImage(a.map).width;
@@ -327,12 +235,12 @@ int runProbe(const ProbeArgs& a, const std::string& backend) {
 
 void addProbeCommand(CLI::App& app, Context& ctx) {
     auto* probe = app.add_subcommand("probe", "evaluate a stage function on a CSV of inputs "
-                                              "(msm, moments, sat-lookup)");
+                                              "(msm, moments, sat-lookup, gaussian)");
     probe->footer(kProbeHelp);
     auto a = std::make_shared<ProbeArgs>();
-    probe->add_option("function", a->function, "msm, moments or sat-lookup")
+    probe->add_option("function", a->function, "msm, moments, sat-lookup or gaussian")
         ->required()
-        ->check(CLI::IsMember({"msm", "moments", "sat-lookup"}));
+        ->check(CLI::IsMember({"msm", "moments", "sat-lookup", "gaussian"}));
     probe->add_option("--solution", a->solution, "reference, student, or a folder of stage files");
     probe->add_option("--input", a->input, "input CSV (header row; columns per function, below)");
     probe->add_option("--out", a->out, "output CSV (default: stdout)");
@@ -341,6 +249,16 @@ void addProbeCommand(CLI::App& app, Context& ctx) {
     probe->add_option("--map", a->map, "sat-lookup: moment map (RGBA EXR)");
     probe->add_option("--map-size", a->mapSize, "sat-lookup: size of the synthetic map (default 1024)")
         ->check(CLI::Range(1, 8192));
+    probe->add_option("--radius", a->radius, "gaussian: the kernel's radius r, 2r + 1 taps (default 4)")
+        ->check(CLI::Range(0, 64));
+    probe->add_option("--sigma", a->sigma, "gaussian: sigma of the weights (default r / 2)");
+    probe->add_option("--passes", a->passes, "gaussian: x, y or xy (x then y; default)")
+        ->check(CLI::IsMember({"x", "y", "xy"}));
+    probe->add_option("--size", a->size, "gaussian --generate: one map size WxH (default 7x5, 67x3, 3x67, 1x1)");
+    probe->add_flag("--sweep", a->sweep, "msm: the property sweep over 10^6 generated cases");
+    probe->add_option("--vectors", a->vectors, "msm --sweep: moment vectors, 4 cases each (default 250000)")
+        ->check(CLI::Range(1, 4000000));
+    probe->add_option("--seed", a->seed, "msm --sweep: the generator's seed (default 20150225)");
     probe->callback([a, &ctx] {
         try {
             ctx.exitCode = runProbe(*a, ctx.backend);

@@ -71,4 +71,23 @@ std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Im
     return runProbe<glm::vec4>(program, boxes.size());
 }
 
+Image probeGaussianBlur(const ShaderLibrary& library, const Image& map, int radius, float sigma,
+                        bool alongX, bool alongY) {
+    if (map.channels != 4 || map.empty())
+        throw std::invalid_argument("probe: the Gaussian probe needs a non-empty RGBA map");
+    Renderer renderer(library);  // its gaussianPass: the same dispatch as a render
+    Texture a = Texture::create(map.width, map.height, GL_RGBA32F);
+    Texture b = Texture::create(map.width, map.height, GL_RGBA32F);
+    a.upload(map);
+    const Texture* result = &a;
+    if (alongX) renderer.gaussianPass(a, b, radius, sigma, {1, 0}), result = &b;
+    if (alongY) {
+        const Texture& dst = result == &a ? b : a;
+        renderer.gaussianPass(*result, dst, radius, sigma, {0, 1});
+        result = &dst;
+    }
+    gl::MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    return result->read();
+}
+
 }  // namespace sl

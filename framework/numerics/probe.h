@@ -27,4 +27,10 @@ std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
 std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Image& moments,
                                           const std::vector<glm::vec4>& boxes);
 
+// What the solution's gaussian_blur.comp makes of `map` (RGBA, bottom row first): the pass
+// along x if alongX, then the pass along y if alongY, each the renderer's own dispatch with
+// the renderer's weights (Renderer::gaussianWeights(radius, sigma)).
+Image probeGaussianBlur(const ShaderLibrary& library, const Image& map, int radius, float sigma,
+                        bool alongX, bool alongY);
+
 }  // namespace sl
