@@ -20,13 +20,6 @@ namespace fs = std::filesystem;
 
 bool startsWith(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
-std::string readText(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 std::string hexBits(float v) {
     uint32_t bits;
     std::memcpy(&bits, &v, sizeof bits);
