@@ -93,6 +93,11 @@ TEST(InstructorGoldens, EveryGoldenHasAPngPreviewThatCheckChecks) {
     EXPECT_GE(previews, 30);
 
     // A preview's hash that is not the fresh render's, and a manifest without previews: stale.
+    // (--check compares encodings, which another Mesa changes: only on the goldens' Mesa.)
+    auto info = test::runCommand(test::shadowlabBinary() + " info");
+    if (info.output.find(manifest["mesa_version"].get<std::string>()) == std::string::npos)
+        GTEST_SKIP() << "this Mesa differs from the goldens' (" << manifest["mesa_version"]
+                     << "): golden --check is not compared";
     const fs::path dir = test::tempDir("instructor_goldens_previews");
     const fs::path pub = copyOfPublicGoldens(dir / "public");
     auto j = manifest;
