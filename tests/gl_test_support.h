@@ -39,6 +39,22 @@ inline std::string readFile(const fs::path& p) {
     return s.str();
 }
 
+// The rows of a CSV file (plain commas, no quoting: what `shadowlab probe` writes), each a list
+// of fields; none if the file is missing.
+inline std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
+    std::ifstream in(p);
+    std::vector<std::vector<std::string>> rows;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::vector<std::string> fields;
+        std::stringstream ss(line);
+        std::string f;
+        while (std::getline(ss, f, ',')) fields.push_back(f);
+        rows.push_back(fields);
+    }
+    return rows;
+}
+
 // Writes `text` to `p`, replacing the file; its folder is made if missing.
 inline void writeFile(const fs::path& p, const std::string& text) {
     if (p.has_parent_path()) fs::create_directories(p.parent_path());

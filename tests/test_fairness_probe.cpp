@@ -12,20 +12,6 @@
 namespace sl {
 namespace {
 
-std::vector<std::vector<std::string>> readCsvFile(const fs::path& p) {
-    std::ifstream in(p);
-    std::vector<std::vector<std::string>> rows;
-    std::string line;
-    while (std::getline(in, line)) {
-        std::vector<std::string> fields;
-        std::stringstream ss(line);
-        std::string f;
-        while (std::getline(ss, f, ',')) fields.push_back(f);
-        rows.push_back(fields);
-    }
-    return rows;
-}
-
 int column(const std::vector<std::string>& header, const std::string& name) {
     for (size_t i = 0; i < header.size(); ++i)
         if (header[i] == name) return int(i);
@@ -46,7 +32,7 @@ TEST(FairnessProbe, SatLookupPrintsExpectedValuesForBoxesThatFitAnyMapSize) {
         auto run = test::runCommand(bin + " probe sat-lookup --solution reference --map-size " +
                                     std::to_string(n) + " --input " + boxes.string() + " --out " + out.string());
         ASSERT_EQ(run.exitCode, 0) << run.output;
-        const auto rows = readCsvFile(out);
+        const auto rows = test::readCsv(out);
         ASSERT_GT(rows.size(), 20u);
         const auto& h = rows[0];
         const int cx = column(h, "cx"), w = column(h, "w"), err = column(h, "max_error"),
@@ -75,7 +61,7 @@ TEST(FairnessProbe, LaddersOfTheGraderCanBeGenerated) {
     // The robustness stage's zf ladder: every hard case at its 50 fragment depths.
     auto zf = test::runCommand(bin + " probe msm --generate zf-ladder --out " + (dir / "zf.csv").string());
     ASSERT_EQ(zf.exitCode, 0) << zf.output;
-    const auto zrows = readCsvFile(dir / "zf.csv");
+    const auto zrows = test::readCsv(dir / "zf.csv");
     EXPECT_EQ(zrows.size(), 1 + msmHardCaseCatalogue().size() * 50);
     // The moments stage's relativeDepth ladder, with depths outside [near, far].
     auto d = test::runCommand(bin + " probe moments --generate depth-ladder --out " + (dir / "d.csv").string());
@@ -83,7 +69,7 @@ TEST(FairnessProbe, LaddersOfTheGraderCanBeGenerated) {
     auto p = test::runCommand(bin + " probe moments --solution reference --input " +
                               (dir / "d.csv").string() + " --out " + (dir / "dout.csv").string());
     ASSERT_EQ(p.exitCode, 0) << p.output;
-    const auto rows = readCsvFile(dir / "dout.csv");
+    const auto rows = test::readCsv(dir / "dout.csv");
     ASSERT_EQ(rows.size(), 1 + relativeDepthLadder().size());
     const int depth = column(rows[0], "lightDepth"), nearC = column(rows[0], "near"),
               farC = column(rows[0], "far"), b1 = column(rows[0], "b1"), e1 = column(rows[0], "expected_b1");

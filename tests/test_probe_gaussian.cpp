@@ -23,15 +23,7 @@ GaussianRun probeGaussian(const std::string& solution, const fs::path& maps, con
     GaussianRun run;
     run.result = test::runCommand(test::shadowlabBinary() + " probe gaussian --solution " + solution + " --input " +
                                   maps.string() + " " + options + " --out " + out.string());
-    std::ifstream in(out);
-    std::string line;
-    while (std::getline(in, line)) {
-        std::vector<std::string> fields;
-        std::stringstream ss(line);
-        std::string f;
-        while (std::getline(ss, f, ',')) fields.push_back(f);
-        run.rows.push_back(fields);
-    }
+    run.rows = test::readCsv(out);
     return run;
 }
 
