@@ -1,6 +1,7 @@
 // The technique table seen from outside: scenes name techniques and parameters and get clear
 // errors; the --technique override keeps or replaces the filter as the row allows; the 16-bit
 // moment transform and its inverse are inverses and land in [0, 1] (UNORM16 can store them).
+#include "gl_test_support.h"
 #include "scene.h"
 #include "technique.h"
 
@@ -144,6 +145,22 @@ TEST(TechniqueTable, ClearValuesAreTheStoreOfDepthOne) {
     EXPECT_FLOAT_EQ(csm[0].z, -1.0f);
     EXPECT_FLOAT_EQ(csm[1].x, -1.0f);
     EXPECT_EQ(csm[1].z, 0.0f);  // the unused half of the last map
+}
+
+}  // namespace sl
+
+namespace sl {
+
+// A row is in a kit when its lighting file is: the student kit leaves out the rows whose files
+// solve a stage, and `render --technique all` and `compare` skip or stand in for them.
+TEST(TechniqueTable, ARowIsInTheKitWhenItsLightingFileIs) {
+    const fs::path shaders = test::tempDir("technique_in_kit") / "shaders";
+    fs::create_directories(shaders / "techniques");
+    const TechniqueRow& soft = techniqueRow(Technique::MsmSoft);
+    EXPECT_FALSE(techniqueInKit(soft, shaders.string()));
+    test::writeFile(shaders / soft.lightingFile, "// present\n");
+    EXPECT_TRUE(techniqueInKit(soft, shaders.string()));
+    EXPECT_FALSE(techniqueInKit(techniqueRow(Technique::Msm4), shaders.string()));
 }
 
 }  // namespace sl

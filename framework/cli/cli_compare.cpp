@@ -32,7 +32,7 @@ struct SheetEntry {
 // there the sheet shows its reference image, made by `shadowlab golden` at the demo's sheet
 // width, when the scene has one; "" if the row renders here or has no image.
 fs::path standInImage(const TechniqueRow& row, const std::string& scenePath) {
-    if (row.solvesStage.empty() || fs::exists(repoRoot() / "shaders" / row.lightingFile)) return {};
+    if (techniqueInKit(row, (repoRoot() / "shaders").string())) return {};
     const fs::path image = repoRoot() / "scenes" / "goldens" / fs::path(scenePath).stem() /
                            "ladder" / (row.name + ".png");
     return fs::exists(image) ? image : fs::path("-");

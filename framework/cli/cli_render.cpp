@@ -57,7 +57,20 @@ int runRender(const std::string& scenePath, const std::string& solution,
         specs.push_back(techniques.substr(start, comma - start));
         start = comma + 1;
     }
-    if (specs.size() == 1 && specs[0] == "all") specs = techniqueNames();
+    if (specs.size() == 1 && specs[0] == "all") {
+        specs.clear();
+        for (const TechniqueRow& row : techniqueTable()) {
+            if (techniqueInKit(row, (repoRoot() / "shaders").string())) specs.push_back(row.name);
+            else std::cout << "skipped " << row.name << " (not in the student kit: " << row.solvesStage << ")\n";
+        }
+    }
+    for (const std::string& spec : specs) {
+        const TechniqueRow& row = techniqueRow(parseTechniqueSpec(spec).first);
+        if (!spec.empty() && !techniqueInKit(row, (repoRoot() / "shaders").string()))
+            throw std::invalid_argument("technique \"" + row.name + "\" is not in the student kit (" +
+                                        row.solvesStage + "); its golden images are in "
+                                        "scenes/goldens/<scene>/ladder/");
+    }
     if (specs.empty()) specs.push_back("");
     for (const std::string& spec : specs) {
         Scene scene = loaded;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <stdexcept>
 
 namespace sl {
@@ -154,6 +155,10 @@ bool allows(const TechniqueRow& row, FilterKind f) {
 }
 
 }  // namespace
+
+bool techniqueInKit(const TechniqueRow& row, const std::string& shaders) {
+    return std::ifstream(shaders + "/" + row.lightingFile).good();
+}
 
 const std::vector<TechniqueRow>& techniqueTable() {
     static const std::vector<TechniqueRow> table = makeTable();

@@ -49,6 +49,10 @@ struct TechniqueRow {
     std::string solvesStage;
 };
 
+// Whether this kit has the row's lighting file under `shaders` (the student kit leaves out the
+// rows that solve a stage: TechniqueRow::solvesStage).
+bool techniqueInKit(const TechniqueRow& row, const std::string& shaders);
+
 // All rows, in the order of the enum.
 const std::vector<TechniqueRow>& techniqueTable();
 const TechniqueRow& techniqueRow(Technique);
