@@ -2,24 +2,12 @@
 // or all at once by compilePrograms, the warm-up before a render's first pass.
 #include "render_internal.h"
 #include "renderer.h"
+
 #include <set>
 #include <stdexcept>
 #include <utility>
 
 namespace sl {
-
-using render_detail::imageFormat;
-
-// GLSL image format qualifier of a texture format (render_internal.h).
-std::string render_detail::imageFormat(GLenum format) {
-    switch (format) {
-        case GL_R32F: return "r32f";
-        case GL_RG32F: return "rg32f";
-        case GL_RGBA32F: return "rgba32f";
-        case GL_RGBA16: return "rgba16";
-    }
-    throw std::logic_error("no image format for texture format " + std::to_string(format));
-}
 
 GlProgram& Renderer::program(const std::string& first, const std::string& fragment,
                              const std::vector<std::string>& defines) {

@@ -65,9 +65,6 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
                      const SceneGeometry& geometry, Texture& color,
                      Texture& shadow, Texture& depth);
 
-// GLSL image format qualifier of a map format ("r32f", "rgba16", ...); pass_programs.cpp.
-std::string imageFormat(GLenum format);
-
 // Dispatches `p` over a `size` image whose invocations each write uTexelsPerInvocation
 // consecutive texels along `direction` (docs/stage_contract.md, "Invocation mapping"), then a
 // barrier; filter_passes.cpp. The Gaussians and the bench's tiled copy.
