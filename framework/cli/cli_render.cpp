@@ -33,15 +33,6 @@ std::string specFolder(std::string spec) {
     return spec;
 }
 
-// probeFailures words a line for the reference ("..., the reference renders 0.5000 ..."), whose
-// render has to meet the probes; a note on another solution's render names that solution.
-std::string probeNote(std::string line, const std::string& solution) {
-    const std::string reference = ", the reference renders ";
-    if (const size_t at = line.find(reference); at != std::string::npos)
-        line.replace(at, reference.size(), ", " + solution + " renders ");
-    return line;
-}
-
 int runRender(const std::string& scenePath, const std::string& solution,
               const std::string& outDir, const std::string& backend, bool explain,
               const std::string& techniques) {
@@ -57,19 +48,13 @@ int runRender(const std::string& scenePath, const std::string& solution,
         specs.push_back(techniques.substr(start, comma - start));
         start = comma + 1;
     }
+    const std::string shaders = (repoRoot() / "shaders").string();
     if (specs.size() == 1 && specs[0] == "all") {
         specs.clear();
         for (const TechniqueRow& row : techniqueTable()) {
-            if (techniqueInKit(row, (repoRoot() / "shaders").string())) specs.push_back(row.name);
+            if (techniqueInKit(row, shaders)) specs.push_back(row.name);
             else std::cout << "skipped " << row.name << " (not in the student kit: " << row.solvesStage << ")\n";
         }
-    }
-    for (const std::string& spec : specs) {
-        const TechniqueRow& row = techniqueRow(parseTechniqueSpec(spec).first);
-        if (!spec.empty() && !techniqueInKit(row, (repoRoot() / "shaders").string()))
-            throw std::invalid_argument("technique \"" + row.name + "\" is not in the student kit (" +
-                                        row.solvesStage + "); its golden images are in "
-                                        "scenes/goldens/<scene>/ladder/");
     }
     if (specs.empty()) specs.push_back("");
     for (const std::string& spec : specs) {
@@ -78,6 +63,11 @@ int runRender(const std::string& scenePath, const std::string& solution,
         fs::path out = outDir.empty() ? fs::path("out") / loaded.name : fs::path(outDir);
         if (!spec.empty()) {
             auto [technique, parameters] = parseTechniqueSpec(spec);
+            const TechniqueRow& row = techniqueRow(technique);
+            if (!techniqueInKit(row, shaders))
+                throw std::invalid_argument("technique \"" + row.name + "\" is not in the student kit (" +
+                                            row.solvesStage + "); its golden images are in "
+                                            "scenes/goldens/<scene>/ladder/");
             overrideTechnique(scene.shadow, technique, parameters);
             if (specs.size() > 1) out /= specFolder(spec);
         }
@@ -92,7 +82,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
             const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
                 auto it = result.images.find(name);
                 return it == result.images.end() ? nullptr : &it->second;
-            });
+            }, solution);
             if (!failures.empty() && solution == "reference") {
                 std::string all;
                 for (const auto& f : failures) all += "\n" + f;
@@ -100,7 +90,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
                                  ") does not match " + std::to_string(failures.size()) +
                                  " probe(s):" + all);
             }
-            for (const auto& f : failures) std::cout << "note: probe: " << probeNote(f, solution) << "\n";
+            for (const auto& f : failures) std::cout << "note: probe: " << f << "\n";
             if (failures.empty())
                 std::cout << "probes: all " << scene.probes.size() << " hold\n";
         }

@@ -13,7 +13,8 @@ std::string probeImageName(const Scene& scene, const ShadowProbe& probe) {
 }
 
 std::vector<std::string> probeFailures(
-    const Scene& scene, const std::function<const Image*(const std::string&)>& image) {
+    const Scene& scene, const std::function<const Image*(const std::string&)>& image,
+    const std::string& solution) {
     std::vector<std::string> failures;
     for (size_t i = 0; i < scene.probes.size(); ++i) {
         const ShadowProbe& p = scene.probes[i];
@@ -35,9 +36,9 @@ std::vector<std::string> probeFailures(
         const float g = img->at(p.pixel.x, img->height - 1 - p.pixel.y, 0);
         if (std::isfinite(g) && std::fabs(g - p.shadow) <= p.tolerance) continue;
         char found[96];
-        std::snprintf(found, sizeof found, ", the reference renders %.4f (off by %.3g)", g,
-                      std::fabs(g - p.shadow));
-        failures.push_back(where + head + found + "; why: \"" + p.why +
+        std::snprintf(found, sizeof found, " renders %.4f (off by %.3g)", g, std::fabs(g - p.shadow));
+        const std::string who = solution == "reference" ? ", the reference" : ", " + solution;
+        failures.push_back(where + head + who + found + "; why: \"" + p.why +
                            "\" (find the pixel of a world point with: shadowlab project --scene " +
                            scene.path + " --point x,y,z)");
     }

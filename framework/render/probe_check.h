@@ -17,9 +17,11 @@ namespace sl {
 std::string probeImageName(const Scene& scene, const ShadowProbe& probe);
 
 // One line per probe that does not hold, naming the scene file, the probe's JSON path, the
-// pixel, the expected and the rendered value and the author's reasoning. `image(name)`
-// returns the rendered image (bottom row first) or nullptr when there is none.
+// pixel, the expected and the value `solution` rendered ("reference", "student", ...) and the
+// author's reasoning. `image(name)` returns the rendered image (bottom row first) or nullptr
+// when there is none.
 std::vector<std::string> probeFailures(const Scene& scene,
-                                       const std::function<const Image*(const std::string&)>& image);
+                                       const std::function<const Image*(const std::string&)>& image,
+                                       const std::string& solution = "reference");
 
 }  // namespace sl
