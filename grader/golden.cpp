@@ -79,8 +79,6 @@ std::string joined(const std::vector<std::string>& items, const char* sep) {
     return s;
 }
 
-// Renders one scene, checks its probes, and encodes its goldens into `dir` (an empty folder).
-// Returns the scene's manifest entry.
 // The ladder's rows whose own files solve a stage (TechniqueRow::solvesStage) are left out of
 // the student kit; their final images at the demo's sheet width stand in for them on its
 // comparison sheets (`compare`), as dir/ladder/<technique>.png.
@@ -96,6 +94,8 @@ void renderLadderStandIns(const Scene& full, Renderer& renderer, const fs::path&
     }
 }
 
+// Renders one scene, checks its probes, and encodes its goldens into `dir` (an empty folder);
+// with `standIns`, also the ladder's stand-ins of a public scene. Returns the manifest entry.
 nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, const fs::path& dir,
                            const ContextInfo& info, std::vector<std::string>& probeErrors,
                            bool standIns) {

@@ -146,7 +146,7 @@ ReportWriter::ReportWriter(std::filesystem::path dir)
 }
 
 void ReportWriter::add(const TestResult& t, const std::string& image, const Image& ref,
-                       const Image& student, const Comparison& c) {
+                       const Image& student, const Comparison& c, const ImageFindings& findings) {
     const std::filesystem::path folder = t.hidden ? staffDir_ : dir_;
     std::filesystem::create_directories(folder / "img");
     std::string base = "img/";
@@ -177,10 +177,15 @@ void ReportWriter::add(const TestResult& t, const std::string& image, const Imag
         writePngPreview(heatMap(reduce(c.errorMap, step, true)), folder / e.diff, false);
         if (full) writePngPreview(heatMap(c.errorMap), folder / (e.diffFull = base + "_diff_full.png"), false);
     }
+    findings_.push_back(findings);
+    entries_.push_back(std::move(e));
+}
+
+void ReportWriter::add(const TestResult& t, const std::string& image, const Image& ref,
+                       const Image& student, const Comparison& c) {
     ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, image);
     f.scene = t.scene, f.stage = t.stage, f.image = image, f.hidden = t.hidden;
-    findings_.push_back(f);
-    entries_.push_back(std::move(e));
+    add(t, image, ref, student, c, f);
 }
 
 std::string ReportWriter::page(const GradeSummary& s, bool staff) const {

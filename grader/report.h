@@ -26,6 +26,9 @@ public:
     // error disappears in a preview). A hidden test's images go to the staff folder only.
     void add(const TestResult& test, const std::string& image, const Image& reference,
              const Image& student, const Comparison& comparison);
+    // The same, with the image's findings already made (findImageProblems, as scoreRender has).
+    void add(const TestResult& test, const std::string& image, const Image& reference,
+             const Image& student, const Comparison& comparison, const ImageFindings& findings);
     void finish(const GradeSummary& summary);  // index.html (and the staff page)
 
     // The page for `summary` (tests scored), student-visible (no hidden test) or staff.

@@ -202,9 +202,9 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         if (c.stubTexels) detail << "; " << c.stubTexels << " texels hold the stub value -1";
         detail << "\n";
         if (c.worstX >= 0 && c.worst > 1.0) detail << worstTexelText(name, c) << "\n";
-        if (report) report->add(t, name, ref, mine, c);
         ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, name);
         f.scene = t.scene, f.stage = t.stage, f.image = name, f.hidden = t.hidden;
+        if (report) report->add(t, name, ref, mine, c, f);
         (ladder ? ladderFraction : mapsFraction) =
             std::min(ladder ? ladderFraction : mapsFraction, c.error.empty() ? c.fraction : 0.0);
         if (ladder) ladderFindings = f;
