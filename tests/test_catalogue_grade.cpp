@@ -40,6 +40,14 @@ std::map<std::string, StageScore> stageScores(const json& results) {
     return stages;
 }
 
+// The reference the catalogue is graded against: live (the default), or the committed
+// goldens with SHADOWLAB_CATALOGUE_REFERENCE=golden (how the verdicts were checked against
+// goldens made on another Mesa: docs/catalogue.md).
+std::string referenceMode() {
+    const char* mode = std::getenv("SHADOWLAB_CATALOGUE_REFERENCE");
+    return mode && std::string(mode) == "golden" ? "golden" : "live";
+}
+
 // Every entry through `shadowlab grade`. Each entry is a complete submission: the reference's
 // five files with the entry's file(s) on top (a folder with the one file alone would, rightly,
 // grade the other stages "not submitted"). Graded on its first scene (the catalogue lists
@@ -74,7 +82,8 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
         const auto start = std::chrono::steady_clock::now();
         const test::CommandResult run = test::runCommand(
             test::shadowlabBinary() + " grade --batch '" + batch.string() + "' --out '" +
-            out.string() + "' --scenes " + scene + " --reference live --no-report -j 2 --timeout 120");
+            out.string() + "' --scenes " + scene + " --reference " + referenceMode() +
+            " --no-report -j 2 --timeout 120");
         std::printf("[catalogue] grade --batch of %zu entries on %s: %.1f s, exit %d\n",
                     entries.size(), scene.c_str(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
