@@ -2,7 +2,7 @@
 // lighting pass with a SAT lookup against a bilinear fetch (see the header).
 #include "filter_benchmark.h"
 
-#include "cpu_clock.h"
+#include "cost_clock.h"
 #include "gl_program.h"
 #include "pass_plan.h"
 #include "render_internal.h"
@@ -25,14 +25,14 @@ double median(std::vector<double> v) {
     return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-// The work's cost: CPU time of every thread of the process around glFinish (cpu_clock.h), so
-// that a pass does not look slower while another process holds a core.
+// The work's cost (cost_clock.h: CPU time of every thread around glFinish, or instructions),
+// so that a pass does not look slower while another process holds a core.
 double timeIt(const std::function<void()>& work) {
     gl::Finish();
-    const double start = processCpuMillis();
+    costBegin();
     work();
     gl::Finish();
-    return processCpuMillis() - start;
+    return costEnd();
 }
 
 // True if some texel holds the stub value -1 in every channel (the source never does).
@@ -104,8 +104,8 @@ constexpr double kBusyCopySpread = 1.5;
 
 double lightingMillis(const RenderResult& result, const PassPlan& plan) {
     double ms = 0;
-    for (size_t i = 0; i < plan.passes.size() && i < result.passCpuMillis.size(); ++i)
-        if (plan.passes[i].kind == PassKind::Lighting) ms += result.passCpuMillis[i];
+    for (size_t i = 0; i < plan.passes.size() && i < result.passCost.size(); ++i)
+        if (plan.passes[i].kind == PassKind::Lighting) ms += result.passCost[i];
     return ms;
 }
 
@@ -211,7 +211,7 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
     }
 
     BenchReport report;
-    report.method = cpuCostMethod();
+    report.method = costMethod();
     report.size = size;
     report.repeats = repeats;
     report.copyMedianMs = median(copyMs);
@@ -249,7 +249,9 @@ std::string formatBenchReport(const BenchReport& report) {
                   "(the floor of moving the texels)\n\n",
                   report.method.c_str(), report.size, report.repeats, report.tileCopyTexels);
     out += line;
-    out += "| pass | median ms | baseline | ratio | spread | goal | tiled |\n"
+    const bool ms = report.method.rfind("CPU ms", 0) == 0 || report.method.empty();
+    out += std::string("| pass | median ") + (ms ? "ms" : "Minstr") +
+           " | baseline | ratio | spread | goal | tiled |\n"
            "|---|---:|---|---:|---:|---|---:|\n";
     for (const BenchRow& row : report.rows) {
         char tiled[32] = "–";  // not measured in copies

@@ -1,5 +1,5 @@
 // filter_benchmark: times the filter passes against copy passes over the same texture, in
-// the same run, as CPU time of all the process's threads around glFinish (cpu_clock.h: a core
+// the same run, as CPU time of all the process's threads around glFinish (cost_clock.h: a core
 // another process holds does not make a pass look slower), and reports medians, spreads and a verdict against the goals of
 // docs/performance.md (machines are noisy and differ; ratios measured in one run travel).
 // Two floors: the copy of issue 10's goals (copy.comp, one texel per invocation), which the
@@ -36,7 +36,7 @@ struct BenchRow {
 std::string benchVerdict(const BenchRow& row);
 
 struct BenchReport {
-    std::string method;  // what a pass's "ms" is (cpu_clock.h: CPU time of all threads)
+    std::string method;  // what a pass's cost is (cost_clock.h: CPU ms of all threads, or instructions)
     int size = 0;
     int repeats = 0;
     double copyMedianMs = 0;      // copy.comp, one texel per invocation

@@ -1,7 +1,7 @@
 // study: the sweep (see study.h).
 #include "study.h"
 
-#include "cpu_clock.h"
+#include "cost_clock.h"
 #include "error_metrics.h"
 #include "filtered_truth.h"
 #include "gpu_resources.h"
@@ -96,7 +96,7 @@ std::string slug(const std::string& s) {
     return out;
 }
 
-std::string fmt(const char* f, double a, double b = 0, double c = 0) {
+std::string studyFmt(const char* f, double a, double b = 0, double c = 0) {
     char buf[96];
     std::snprintf(buf, sizeof buf, f, a, b, c);
     return buf;
@@ -114,7 +114,7 @@ Scene withLightSize(const Scene& base, double size) {
 }
 
 // "truth/light_0.8": where a light size's truth previews go.
-std::string truthFolder(double lightSize) { return "truth/light_" + fmt("%g", lightSize); }
+std::string truthFolder(double lightSize) { return "truth/light_" + studyFmt("%g", lightSize); }
 
 // The scene a combination renders: the base scene with the row's light, map, filter and
 // technique.
@@ -184,7 +184,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     Renderer reference(referenceLib);
     Renderer solution(ShaderLibrary::forSolution(resolveSolution(o.solution), repoRoot()));
     CopyYardstick copy(solution);
-    const std::string method = cpuCostMethod();
+    const std::string method = costMethod();
 
     // The truth, once per light size (and from the disk cache when the scene has not changed),
     // traced when a row first needs it.
@@ -205,11 +205,11 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         summary.maxStdError = std::max(summary.maxStdError, t.ray.maxStdError);
         summary.samplesPerPixel = std::max(summary.samplesPerPixel, t.ray.samplesPerPixel);
         summary.notes.push_back(std::string("ray-traced truth") +
-                                (lightSize < 0 ? "" : " (light size " + fmt("%g", lightSize) + ")") +
+                                (lightSize < 0 ? "" : " (light size " + studyFmt("%g", lightSize) + ")") +
                                 ": " + (t.fromCache ? "read from the cache" : "traced") + " (" +
                                 std::to_string(t.ray.samplesPerPixel) + " rays per pixel, max "
-                                "standard error " + fmt("%.4f", t.ray.maxStdError) + ", " +
-                                fmt("%.1f s", t.seconds) + ", key " + t.hash.substr(0, 12) + ")");
+                                "standard error " + studyFmt("%.4f", t.ray.maxStdError) + ", " +
+                                studyFmt("%.1f s", t.seconds) + ", key " + t.hash.substr(0, 12) + ")");
         return t;
     };
     SceneTruthOptions hashOnly = to;
@@ -292,7 +292,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         const std::string what = c.spec + " " + row.filter +
                                  (c.radius ? " r=" + std::to_string(c.radius) : "") + " " +
                                  std::to_string(c.size) + "²" +
-                                 (c.lightSize < 0 ? "" : " light " + fmt("%g", c.lightSize));
+                                 (c.lightSize < 0 ? "" : " light " + studyFmt("%g", c.lightSize));
         if (o.progress) {
             const int at = summary.run + summary.skipped;
             const double elapsed = std::chrono::duration<double>(Clock::now() - sweepStart).count();
@@ -307,9 +307,9 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         const MapLayout layout = mapLayout(s.shadow);
         row.kernelTexels = c.filter == FilterKind::None ? 1.0 : 2.0 * c.radius + 1.0;
         row.bits = techniqueRow(c.technique).bitsPerChannel;
-        row.parameters = "momentBias=" + fmt("%g", s.shadow.momentBias);
+        row.parameters = "momentBias=" + studyFmt("%g", s.shadow.momentBias);
         for (const auto& [name, value] : resolvedParameters(s.shadow))
-            row.parameters += ";" + name + "=" + fmt("%g", value);
+            row.parameters += ";" + name + "=" + studyFmt("%g", value);
         row.mapBytes = size_t(c.size) * c.size * size_t(layout.layers) * size_t(layout.bytesPerTexel);
         row.planBytes = plan.bytes(light);
 
@@ -350,7 +350,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             double frame = 0, wall = 0;
             shadowMs.emplace_back();
             for (size_t p = 0; p < plan.passes.size(); ++p) {
-                double ms = result.passCpuMillis.at(p);
+                double ms = result.passCost.at(p);
                 double wallMs = result.passMillis.at(p);
                 if (isShadowPass(p)) {
                     // The j-th shadow pass (a cascade's, the peel) takes the rendering row's j-th.
@@ -391,7 +391,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             medians.push_back(st.median);
             row.passTimes += (p ? ";" : "") + std::string(toString(plan.passes[p].kind)) +
                              (plan.passes[p].light >= 0 ? "@L" + std::to_string(plan.passes[p].light) : "") +
-                             "=" + fmt("%.3f/%.3f/%.3f", st.min, st.median, st.max) +
+                             "=" + studyFmt("%.3f/%.3f/%.3f", st.min, st.median, st.max) +
                              (given && isShadowPass(p) ? "(shared)" : "");
         }
 
@@ -419,7 +419,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         const std::string name = slug(row.spec) + "_" + row.filter +
                                  (c.radius ? "_r" + std::to_string(c.radius) : "") + "_" +
                                  std::to_string(c.size) +
-                                 (c.lightSize < 0 ? "" : "_light" + fmt("%g", c.lightSize));
+                                 (c.lightSize < 0 ? "" : "_light" + studyFmt("%g", c.lightSize));
         row.image = "rows/" + name + "_shadow.png";
         row.errorMap = "rows/" + name + "_error.png";
         writePngPreview(shadow, o.out / row.image, false);

@@ -1,7 +1,7 @@
 // study_cost: the study's cost axis (see study_cost.h).
 #include "study_cost.h"
 
-#include "cpu_clock.h"
+#include "cost_clock.h"
 #include "gl_api.h"
 
 #include <algorithm>
@@ -29,10 +29,10 @@ CopyYardstick::CopyYardstick(Renderer& r)
 
 double CopyYardstick::measureOnce() {
     gl::Finish();
-    const double t0 = processCpuMillis();
+    costBegin();
     renderer_.copyPass(src_, dst_);
     gl::Finish();
-    return processCpuMillis() - t0;
+    return costEnd();
 }
 
 }  // namespace sl

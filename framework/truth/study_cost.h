@@ -1,5 +1,5 @@
 // study_cost: the study's cost axis. A pass's cost is the CPU time of every thread of the
-// process around its glFinish (cpu_clock.h): llvmpipe's threads do the work, and time spent
+// process around its glFinish (cost_clock.h; or callgrind's instruction count, the exact mode): llvmpipe's threads do the work, and time spent
 // waiting for a core another process holds is not counted, so the figure holds on a busy
 // machine where wall time does not. The copy pass (1024² RGBA32F) is measured the same way,
 // interleaved with the row's frames (copy, frame, copy, frame, ...), so that a slow drift
@@ -20,7 +20,7 @@ struct CostStats {
 };
 CostStats costStats(const std::vector<double>& values);
 
-// The copy pass, for the ratio: one measurement per call, CPU ms.
+// The copy pass, for the ratio: one measurement per call (cost_clock.h's unit).
 class CopyYardstick {
 public:
     explicit CopyYardstick(Renderer& renderer);

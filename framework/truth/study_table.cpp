@@ -13,8 +13,8 @@ const std::vector<std::string>& columns() {
     static const std::vector<std::string> c = {
         "scene", "solution", "technique", "spec", "filter", "radius", "kernel_texels", "map_size",
         "light_size", "bits", "parameters", "map_bytes", "plan_bytes", "repeats",
-        "frame_cpu_ms_min", "frame_cpu_ms_median", "frame_cpu_ms_max", "frame_wall_ms_median",
-        "pass_cpu_ms", "copy_cpu_ms", "frame_over_copy", "cost_method",
+        "frame_cost_min", "frame_cost_median", "frame_cost_max", "frame_wall_ms_median",
+        "pass_cost", "copy_cost", "frame_over_copy", "cost_method",
         "truth_rmse", "truth_max", "truth_p99", "truth_over_0.05", "truth_leak_area",
         "truth_dark_area", "filtered_rmse", "filtered_max", "filtered_p99",
         "filtered_over_0.05", "filtered_leak_area", "filtered_dark_area", "pixels", "reused",

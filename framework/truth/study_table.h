@@ -27,11 +27,12 @@ struct StudyRow {
     size_t mapBytes = 0;       // the technique's map (all layers)
     size_t planBytes = 0;      // every shadow texture the plan allocates for the light
     int repeats = 0;
-    // The frame's cost: CPU ms of all threads, sum of the planned passes, over the repeats.
+    // The frame's cost (cost_method: CPU ms of all threads, or millions of instructions), sum of
+    // the planned passes, over the repeats.
     double frameMin = 0, frameMedian = 0, frameMax = 0;
     double frameWallMedian = 0;  // the same frames' wall time (moves with the host's load)
-    std::string passTimes;     // "shadow=min/med/max;gaussian-x=...", CPU ms
-    double copyMillis = 0;     // the copy pass (1024² RGBA32F), CPU ms, minimum over the
+    std::string passTimes;     // "shadow=min/med/max;gaussian-x=...", the cost's unit
+    double copyMillis = 0;     // the copy pass (1024² RGBA32F), the cost's unit, minimum over the
                                // repeats interleaved with the row's frames
     double frameRatio = 0;     // frameMin / copyMillis: travels between machines
     std::string costMethod;    // what the cost columns measure (study_cost.h)
