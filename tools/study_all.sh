@@ -12,9 +12,9 @@ ROOT="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
 OUT="${SHADOWLAB_STUDY_OUT:-$ROOT/out/study}"
 DOCS="$ROOT/docs/accuracy"
 # The documented sweep: every technique of the table, 256²..2048² maps, Gaussian radius 1 and 4
-# (the SAT box 3 and 9 texels), both filters, each light as a point (hard truth) and as a 0.8
-# disk (area truth), 3 timed frames, a 192² image: 296 rows a scene, three quarters of them
-# lighting with a raw map an earlier row rendered. Widen it with extra options, e.g.
+# (the SAT box of equal variance: 1.73 and 6.93 texels), both filters, each light as a point
+# (hard truth) and as a 0.8 disk (area truth), 3 timed frames, a 192² image: 296 rows a scene,
+# three quarters of them lighting with a raw map an earlier row rendered. Widen it with extra options, e.g.
 # --radii 1,2,4,8,16. Costs are CPU time with llvmpipe's thread count fixed (study_cost.h).
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 SWEEP=(--map-sizes 256,512,1024,2048 --radii 1,4 --filters gaussian,sat --light-sizes 0,0.8

@@ -137,7 +137,7 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     study->add_option("--techniques", s->techniques,
                       "comma-separated technique specs (vsm:bleedReduction=0.3); default: every technique");
     study->add_option("--map-sizes", s->sizes, "shadow-map sizes");
-    study->add_option("--radii", s->radii, "Gaussian radii r (the SAT box is 2r + 1 texels)");
+    study->add_option("--radii", s->radii, "Gaussian radii r, σ = r / 2 (the SAT box has the same variance: r·√3 texels)");
     study->add_option("--filters", s->filters, "filters to sweep where a technique allows them");
     study->add_option("--light-sizes", s->lightSizes,
                       "light sizes to sweep (0: point light; > 0: a disk that wide); default: the scene's");

@@ -102,6 +102,9 @@ std::string studyFmt(const char* f, double a, double b = 0, double c = 0) {
     return buf;
 }
 
+// The SAT box of the same variance as the Gaussian of radius r (σ = r / 2): σ·√12 texels.
+double satBoxTexels(int radius) { return 0.5 * radius * std::sqrt(12.0); }
+
 // The scene with every light of the given size (< 0: as the file has it).
 Scene withLightSize(const Scene& base, double size) {
     Scene s = base;
@@ -124,7 +127,10 @@ Scene rowScene(const Scene& file, const Combination& c) {
     s.shadow.filter = c.filter;
     s.shadow.gaussianRadius = std::max(c.radius, 1);
     s.shadow.gaussianSigma = 0.0f;  // r / 2
-    s.shadow.satKernelTexels = float(2 * c.radius + 1);
+    // Filters compared at equal variance: the Gaussian's σ = r / 2, so the SAT's box is
+    // σ·√12 = r·√3 texels wide (a box of width w has variance w² / 12; the lookup weighs the
+    // partly covered texels at its edges).
+    s.shadow.satKernelTexels = float(satBoxTexels(c.radius));
     overrideTechnique(s.shadow, c.technique, c.params);
     s.shadow.filter = c.filter;
     if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
@@ -305,7 +311,9 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         const PassPlan plan = rowPlan(s);
         const int light = plan.shadowLights.front();
         const MapLayout layout = mapLayout(s.shadow);
-        row.kernelTexels = c.filter == FilterKind::None ? 1.0 : 2.0 * c.radius + 1.0;
+        row.kernelTexels = c.filter == FilterKind::None ? 1.0
+                           : c.filter == FilterKind::Sat ? satBoxTexels(c.radius)
+                                                         : 2.0 * c.radius + 1.0;
         row.bits = techniqueRow(c.technique).bitsPerChannel;
         row.parameters = "momentBias=" + studyFmt("%g", s.shadow.momentBias);
         for (const auto& [name, value] : resolvedParameters(s.shadow))

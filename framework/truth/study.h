@@ -26,7 +26,7 @@ struct StudyOptions {
     fs::path scene;
     std::vector<std::string> techniques;  // specs, "msm4" or "vsm:bleedReduction=0.3"
     std::vector<int> mapSizes = {256, 512, 1024, 2048};
-    std::vector<int> radii = {1, 2, 4, 8, 16};      // Gaussian r; SAT box 2r + 1 texels
+    std::vector<int> radii = {1, 2, 4, 8, 16};      // Gaussian r; SAT box r·√3 texels (equal variance)
     std::vector<std::string> filters = {"gaussian", "sat"};
     // The light-size axis: every light of the scene gets each size in turn (0: a point light,
     // scored against the hard truth; > 0: a disk of that diameter, against its area truth).

@@ -18,8 +18,9 @@ namespace fs = std::filesystem;
 struct StudyRow {
     std::string scene, solution, technique, spec;  // spec: "vsm:bleedReduction=0.3"
     std::string filter;        // none | gaussian | sat
-    int radius = 0;            // gaussian radius r; the SAT box is 2r + 1 texels; 0: no filter
-    double kernelTexels = 0;   // the filter's width in texels (2r + 1; 1 for none)
+    int radius = 0;            // gaussian radius r (σ = r / 2); the SAT box has the same
+                               // variance, r·√3 texels wide; 0: no filter
+    double kernelTexels = 0;   // the filter's width in texels (Gaussian 2r + 1, SAT r·√3; 1 for none)
     int mapSize = 0;
     double lightSize = 0;      // the shadowing light's size (0: a point light, hard truth)
     int bits = 32;             // per channel of the map
