@@ -60,6 +60,11 @@ TEST_F(Study, OneRowPerCombinationNoNaNWorseSmallMapAndReuse) {
                          r.truth.p99, r.filtered.rmse, r.filtered.max})
             EXPECT_TRUE(std::isfinite(v)) << r.key();
         EXPECT_GT(r.frameRatio, 0.0) << r.key();
+        // The cost: CPU time, its minimum no more than its median, the method named.
+        EXPECT_LE(r.frameMin, r.frameMedian) << r.key();
+        EXPECT_LE(r.frameMedian, r.frameMax) << r.key();
+        EXPECT_NE(r.costMethod.find("CPU time"), std::string::npos) << r.costMethod;
+        EXPECT_EQ(r.lightSize, 0.0) << "classic has a point light";
         EXPECT_GT(r.truth.pixels, 1000u) << r.key();
         EXPECT_GT(r.mapBytes, 0u);
         EXPECT_TRUE(fs::exists(*dir_ / r.errorMap)) << r.errorMap;

@@ -182,7 +182,7 @@ TEST_F(StudySharing, RenderedOnceSameBitsAsUnsharedAndResumes) {
     const auto shared = byKey(sharedDir / "study.csv"), own = byKey(ownDir / "study.csv");
     ASSERT_EQ(shared.size(), 7u);
     ASSERT_EQ(own.size(), 7u);
-    const std::string hardKey = "classic|reference|hard|none|0|128";
+    const std::string hardKey = "classic|reference|hard|none|0|128|light 0";
     ASSERT_TRUE(shared.count(hardKey));
     for (const auto& [key, r] : shared) {
         const StudyRow& o = own.at(key);
@@ -206,10 +206,10 @@ TEST_F(StudySharing, RenderedOnceSameBitsAsUnsharedAndResumes) {
     }
     EXPECT_TRUE(shared.at(hardKey).mapFrom.empty());
     // evsm2 at exponent 20 shares only with itself (its r = 3 row from its r = 1 row).
-    const StudyRow& e20 = shared.at("classic|reference|evsm2:positiveExponent=20|gaussian|3|128");
-    EXPECT_EQ(e20.mapFrom, "classic|reference|evsm2:positiveExponent=20|gaussian|1|128");
-    EXPECT_NE(e20.mapKey, shared.at("classic|reference|evsm2|gaussian|3|128").mapKey);
-    EXPECT_EQ(shared.at("classic|reference|evsm2:positiveExponent=20|gaussian|1|128").mapFrom, "");
+    const StudyRow& e20 = shared.at("classic|reference|evsm2:positiveExponent=20|gaussian|3|128|light 0");
+    EXPECT_EQ(e20.mapFrom, "classic|reference|evsm2:positiveExponent=20|gaussian|1|128|light 0");
+    EXPECT_NE(e20.mapKey, shared.at("classic|reference|evsm2|gaussian|3|128|light 0").mapKey);
+    EXPECT_EQ(shared.at("classic|reference|evsm2:positiveExponent=20|gaussian|1|128|light 0").mapFrom, "");
 
     // Resume: drop hard's row (the map's source), one pcf row and one evsm2 row whose source
     // stays. The rerun renders hard's map again and shares it with the pcf row; the evsm2 row
@@ -234,8 +234,8 @@ TEST_F(StudySharing, RenderedOnceSameBitsAsUnsharedAndResumes) {
     const auto resumed = byKey(sharedDir / "study.csv");
     ASSERT_EQ(resumed.size(), 7u);
     for (const auto& [key, r] : resumed) EXPECT_EQ(r.imageDigest, own.at(key).imageDigest) << key;
-    EXPECT_EQ(resumed.at("classic|reference|pcf|gaussian|3|128").mapFrom, hardKey);
-    EXPECT_EQ(resumed.at("classic|reference|evsm2|gaussian|3|128").mapFrom, "");
+    EXPECT_EQ(resumed.at("classic|reference|pcf|gaussian|3|128|light 0").mapFrom, hardKey);
+    EXPECT_EQ(resumed.at("classic|reference|evsm2|gaussian|3|128|light 0").mapFrom, "");
 }
 
 }  // namespace

@@ -12,15 +12,19 @@ ROOT="$(cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")/.." && pwd)"
 OUT="${SHADOWLAB_STUDY_OUT:-$ROOT/out/study}"
 DOCS="$ROOT/docs/accuracy"
 # The documented sweep: every technique of the table, 256²..2048² maps, Gaussian radius 1 and 4
-# (the SAT box 3 and 9 texels), both filters, 2 timed frames, a 192² image: 148 rows a scene,
-# 112 of them lighting with a raw map an earlier row rendered. (About 35 minutes on a loaded
-# 2-core machine; widen it with extra options, e.g. --radii 1,2,4,8,16.)
-SWEEP=(--map-sizes 256,512,1024,2048 --radii 1,4 --filters gaussian,sat --repeats 2 --image 192)
+# (the SAT box of equal variance: 1.73 and 6.93 texels), both filters, each light as a point
+# (hard truth) and as a 0.8 disk (area truth), 3 timed frames, a 192² image: 296 rows a scene,
+# three quarters of them lighting with a raw map an earlier row rendered. Widen it with extra options, e.g.
+# --radii 1,2,4,8,16. Costs are CPU time with llvmpipe's thread count fixed (study_cost.h).
+export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
+SWEEP=(--map-sizes 256,512,1024,2048 --radii 1,4 --filters gaussian,sat --light-sizes 0,0.8
+       --repeats 3 --image 192)
 QUICK=0
 if [ "${1:-}" = --quick ]; then
   shift; QUICK=1
   OUT="$OUT/quick"; DOCS="$OUT/docs"  # never mixed with, nor replacing, the documented run
-  SWEEP=(--map-sizes 256,1024 --radii 2,8 --filters gaussian,sat --repeats 2 --image 128)
+  SWEEP=(--map-sizes 256,1024 --radii 2,8 --filters gaussian,sat --light-sizes 0,0.8 --repeats 2
+         --image 128)
 fi
 SCENES=()
 for s in "$ROOT"/scenes/classic.json "$ROOT"/scenes/contact.json \
@@ -35,14 +39,15 @@ done
 mkdir -p "$DOCS"
 "$BIN" info | grep -v "^kit root" > "$DOCS/machine.txt"
 grep -m1 'model name' /proc/cpuinfo | sed 's/^model name\s*: /cpu:      /' >> "$DOCS/machine.txt"
-echo "threads:  $(nproc)" >> "$DOCS/machine.txt"
+echo "threads:  $(nproc), LP_NUM_THREADS=$LP_NUM_THREADS" >> "$DOCS/machine.txt"
+START=$(date +%s)
 for scene in "${SCENES[@]}"; do
   name="$(basename "$scene" .json)"
   echo "== $name"
   "$BIN" study --scene "$scene" --out "$OUT/$name" "${SWEEP[@]}" "$@"
   dest="$DOCS/$name"
   rm -rf "$dest"; mkdir -p "$dest"
-  cp "$OUT/$name"/{study.csv,pareto.svg,pareto.png,pareto_bytes.svg,pareto_bytes.png,index.html} "$dest/"
+  cp "$OUT/$name"/{study.csv,index.html} "$OUT/$name"/pareto*.svg "$OUT/$name"/pareto*.png "$dest/"
   # The images the page shows (one row per technique, the truth), nothing else.
   grep -o 'src="[^"]*\.png"' "$OUT/$name/index.html" | sed 's/^src="//; s/"$//' | sort -u |
     while read -r img; do mkdir -p "$dest/$(dirname "$img")"; cp "$OUT/$name/$img" "$dest/$img"; done
@@ -59,4 +64,5 @@ for name in classic light_bleeding; do
   rm -rf "$DOCS/alpha_$name"; mkdir -p "$DOCS/alpha_$name"
   cp "$OUT/alpha_$name"/{study.csv,pareto.svg,pareto.png} "$DOCS/alpha_$name/"
 done
+echo "took:     $(( $(date +%s) - START )) s (tools/study_all.sh, wall clock)" >> "$DOCS/machine.txt"
 echo "docs/accuracy/: ${#SCENES[@]} scenes and the α sweep; see docs/accuracy.md"

@@ -7,9 +7,11 @@
 if (!exists("dir")) dir = "plots"
 if (!exists("names")) names = ""
 if (!exists("title")) title = ""
+if (!exists("out")) out = dir . "/../pareto"  # the time plot; the bytes plot adds "_bytes"
 n = words(names)
 
 set logscale xy
+set termoption noenhanced  # scene names hold underscores (contact_hardening), not subscripts
 set grid xtics ytics mxtics mytics lc rgb "#dddddd"
 set key outside right top
 set ylabel "RMSE of G against the ray-traced truth"
@@ -20,17 +22,17 @@ lc(i) = word("#1b9e77 #d95f02 #7570b3 #e7298a #66a61e #e6ab02 #a6761d #666666 #1
 
 do for [kind in "time bytes"] {
     if (kind eq "time") {
-        set xlabel "frame time / copy-pass time (same run)"
-        xcol = 1; front = dir . "/front.dat"; out = dir . "/../pareto"
+        set xlabel "frame cost / copy-pass cost (CPU time of all threads, minimum over repeats)"
+        xcol = 1; front = dir . "/front.dat"; file = out
         set title title . ": error against time"
     } else {
         set xlabel "shadow-map bytes"
-        xcol = 3; front = dir . "/front_bytes.dat"; out = dir . "/../pareto_bytes"
+        xcol = 3; front = dir . "/front_bytes.dat"; file = out . "_bytes"
         set title title . ": error against memory"
     }
     do for [term in "svg pngcairo"] {
-        if (term eq "svg") { set terminal svg size 900,560 dynamic font "sans,12"; set output out . ".svg" }
-        else { set terminal pngcairo size 900,560 font "sans,10"; set output out . ".png" }
+        if (term eq "svg") { set terminal svg size 900,560 dynamic font "sans,12"; set output file . ".svg" }
+        else { set terminal pngcairo size 900,560 font "sans,10"; set output file . ".png" }
         plot for [i=1:n] sprintf("%s/tech_%d.dat", dir, i) using xcol:2 \
                  with points pt pt(i) lc rgb lc(i) title word(names, i), \
              for [i=1:n] sprintf("%s/%s_%d.dat", dir, (kind eq "time" ? "techfront" : "techfront_bytes"), i) \

@@ -14,6 +14,7 @@
 #include "scene.h"
 #include "scene_truth.h"
 #include "study.h"
+#include "study_shard.h"
 #include "technique.h"
 
 #include <fstream>
@@ -125,7 +126,9 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     auto* study = app.add_subcommand("study", "sweep techniques, map sizes and filters against the ground truth");
     struct StudyArgs {
         std::string scene, techniques, sizes = "256,512,1024,2048", radii = "1,2,4,8,16",
-                    filters = "gaussian,sat", solution = defaultSolution(), out, cache;
+                    filters = "gaussian,sat", solution = defaultSolution(), out, cache,
+                    lightSizes, shard = "1/1";
+        std::vector<std::string> merge;
         int repeats = 3, samples = 1296, image = 0;
         bool explain = false, noProgress = false, noShare = false;
     };
@@ -134,9 +137,14 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     study->add_option("--techniques", s->techniques,
                       "comma-separated technique specs (vsm:bleedReduction=0.3); default: every technique");
     study->add_option("--map-sizes", s->sizes, "shadow-map sizes");
-    study->add_option("--radii", s->radii, "Gaussian radii r (the SAT box is 2r + 1 texels)");
+    study->add_option("--radii", s->radii, "Gaussian radii r, σ = r / 2 (the SAT box has the same variance: r·√3 texels)");
     study->add_option("--filters", s->filters, "filters to sweep where a technique allows them");
+    study->add_option("--light-sizes", s->lightSizes,
+                      "light sizes to sweep (0: point light; > 0: a disk that wide); default: the scene's");
     study->add_option("--repeats", s->repeats, "timed frames per row")->check(CLI::Range(1, 100));
+    study->add_option("--shard", s->shard, "run only shard K of N (K/N), whole groups of rows sharing a map");
+    study->add_option("--merge", s->merge, "study folders of shards to merge into --out first")
+        ->expected(1, -1);
     study->add_option("--solution", s->solution, "whose stages: reference, student or a folder");
     study->add_option("--samples", s->samples, "shadow rays per pixel for area lights")->check(CLI::Range(4, 65536));
     study->add_option("--image", s->image, "render the main camera at N×N instead")->check(CLI::Range(16, 4096));
@@ -155,6 +163,22 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
         o.radii = intList(s->radii, "--radii");
         o.filters = splitList(s->filters);
         o.repeats = s->repeats;
+        for (const auto& item : splitList(s->lightSizes)) {
+            try {
+                size_t used = 0;
+                const double v = std::stod(item, &used);
+                if (used != item.size() || v < 0) throw std::invalid_argument(item);
+                o.lightSizes.push_back(v);
+            } catch (const std::logic_error&) {
+                throw CLI::ValidationError("--light-sizes", "expected sizes >= 0, found \"" + item + "\"");
+            }
+        }
+        try {
+            parseShard(s->shard, o.shard, o.shards);
+        } catch (const std::invalid_argument& e) {
+            throw CLI::ValidationError("--shard", e.what());
+        }
+        for (const auto& m : s->merge) o.mergeFrom.push_back(m);
         o.solution = s->solution;
         o.samples = s->samples;
         o.imageSize = s->image;

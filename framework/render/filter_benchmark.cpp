@@ -2,6 +2,7 @@
 // lighting pass with a SAT lookup against a bilinear fetch (see the header).
 #include "filter_benchmark.h"
 
+#include "cost_clock.h"
 #include "gl_program.h"
 #include "pass_plan.h"
 #include "render_internal.h"
@@ -10,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <random>
@@ -25,13 +25,14 @@ double median(std::vector<double> v) {
     return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
+// The work's cost (cost_clock.h: CPU time of every thread around glFinish, or instructions),
+// so that a pass does not look slower while another process holds a core.
 double timeIt(const std::function<void()>& work) {
     gl::Finish();
-    const auto start = std::chrono::steady_clock::now();
+    costBegin();
     work();
     gl::Finish();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
+    return costEnd();
 }
 
 // True if some texel holds the stub value -1 in every channel (the source never does).
@@ -103,8 +104,8 @@ constexpr double kBusyCopySpread = 1.5;
 
 double lightingMillis(const RenderResult& result, const PassPlan& plan) {
     double ms = 0;
-    for (size_t i = 0; i < plan.passes.size() && i < result.passMillis.size(); ++i)
-        if (plan.passes[i].kind == PassKind::Lighting) ms += result.passMillis[i];
+    for (size_t i = 0; i < plan.passes.size() && i < result.passCost.size(); ++i)
+        if (plan.passes[i].kind == PassKind::Lighting) ms += result.passCost[i];
     return ms;
 }
 
@@ -210,6 +211,7 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
     }
 
     BenchReport report;
+    report.method = costMethod();
     report.size = size;
     report.repeats = repeats;
     report.copyMedianMs = median(copyMs);
@@ -239,14 +241,17 @@ std::string formatBenchReport(const BenchReport& report) {
     std::string out;
     char line[512];
     std::snprintf(line, sizeof line,
+                  "cost: %s\n"
                   "%d² RGBA32F, %d interleaved repeats; ratio = median pass / median baseline, "
                   "spread = min–max over repeats of pass / baseline of the same repeat, "
                   "goal: issue 10's, on the ratio;\n"
                   "tiled = median pass / median of as many passes of the %d-texel copy "
                   "(the floor of moving the texels)\n\n",
-                  report.size, report.repeats, report.tileCopyTexels);
+                  report.method.c_str(), report.size, report.repeats, report.tileCopyTexels);
     out += line;
-    out += "| pass | median ms | baseline | ratio | spread | goal | tiled |\n"
+    const bool ms = report.method.rfind("CPU ms", 0) == 0 || report.method.empty();
+    out += std::string("| pass | median ") + (ms ? "ms" : "Minstr") +
+           " | baseline | ratio | spread | goal | tiled |\n"
            "|---|---:|---|---:|---:|---|---:|\n";
     for (const BenchRow& row : report.rows) {
         char tiled[32] = "–";  // not measured in copies
@@ -289,7 +294,8 @@ std::string benchReportJson(const BenchReport& report) {
                         {"tileBaselineMs", tiled(row.tileBaselineMs)},
                         {"tileRatio", tiled(row.tileRatio)}});
     }
-    return nlohmann::json{{"size", report.size},
+    return nlohmann::json{{"method", report.method},
+                          {"size", report.size},
                           {"repeats", report.repeats},
                           {"copyMs", report.copyMedianMs},
                           {"copyMinMs", report.copyMinMs},

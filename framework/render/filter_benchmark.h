@@ -1,5 +1,6 @@
 // filter_benchmark: times the filter passes against copy passes over the same texture, in
-// the same run, and reports medians, spreads and a verdict against the goals of
+// the same run, as CPU time of all the process's threads around glFinish (cost_clock.h: a core
+// another process holds does not make a pass look slower), and reports medians, spreads and a verdict against the goals of
 // docs/performance.md (machines are noisy and differ; ratios measured in one run travel).
 // Two floors: the copy of issue 10's goals (copy.comp, one texel per invocation), which the
 // verdict is against, and a tiled copy (copy_tile.comp, 4 texels of a row per invocation, the
@@ -35,6 +36,7 @@ struct BenchRow {
 std::string benchVerdict(const BenchRow& row);
 
 struct BenchReport {
+    std::string method;  // what a pass's cost is (cost_clock.h: CPU ms of all threads, or instructions)
     int size = 0;
     int repeats = 0;
     double copyMedianMs = 0;      // copy.comp, one texel per invocation

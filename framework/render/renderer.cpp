@@ -5,6 +5,7 @@
 #include "render_internal.h"
 
 #include "cascades.h"
+#include "cost_clock.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -118,12 +119,14 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     gl::DepthFunc(GL_LESS);
     for (const PlannedPass& pass : plan.passes) {
         const auto start = std::chrono::steady_clock::now();
+        costBegin();
         ShadowMaps* m = pass.light >= 0 ? &maps.at({pass.light, pass.cascade}) : nullptr;
         const bool shadowPass = pass.kind == PassKind::Shadow || pass.kind == PassKind::ShadowSecond;
         // The caller's filtered moments stand in for all of this light's passes, its raw map
         // for its shadow passes.
         if (m && (m->given || (m->givenRaw && shadowPass))) {
             result.passMillis.push_back(0.0);
+            result.passCost.push_back(0.0);
             continue;
         }
         // A filter's input: the raw map, or its RGBA32F copy where it is not RGBA32F.
@@ -185,6 +188,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         result.passMillis.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());
+        result.passCost.push_back(costEnd());
     }
     readBack(library_, row, fx, plan, maps, result);
     if (inputs.keepRawMaps)

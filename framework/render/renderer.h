@@ -59,6 +59,7 @@ struct RenderResult {
     // (colour); further cameras add "_<camera name>".
     std::map<std::string, Image> images;
     std::vector<double> passMillis;     // one per planned pass (glFinish-bounded wall time)
+    std::vector<double> passCost;       // the same passes' cost (cost_clock.h: CPU ms, all threads)
     std::vector<std::string> stubNotes; // "student/msm.glsl: momentShadowIntensity: not implemented yet ..."
     // With RenderInputs::keepRawMaps: each shadowing light's raw map, to feed to later renders
     // through RenderInputs::rawMaps (given maps come back as they went in).

@@ -32,6 +32,10 @@ std::string sceneTruthHash(const Scene& scene, const SceneTruthOptions& options)
     for (const Object& o : scene.objects)
         if (o.shape == ShapeType::Mesh) key += "\n" + fileBytes(o.meshPath);
     key += "\nsamples=" + std::to_string(stratifiedSide(options.rays.samples));
+    // A study may give a light another size than its file (the light-size axis).
+    for (const Light& l : scene.lights)
+        key += "\nlight size=" + std::to_string(l.size) + "," + std::to_string(l.rectangle.x) +
+               "," + std::to_string(l.rectangle.y);
     const Camera& cam = scene.cameras.at(size_t(options.camera));
     key += "\ncamera=" + std::to_string(options.camera) + ":" + std::to_string(cam.width) + "x" +
            std::to_string(cam.height);  // a study may render the scene smaller than its file

@@ -1,6 +1,7 @@
 // study: the sweep (see study.h).
 #include "study.h"
 
+#include "cost_clock.h"
 #include "error_metrics.h"
 #include "filtered_truth.h"
 #include "gpu_resources.h"
@@ -11,7 +12,9 @@
 #include "raw_map_key.h"
 #include "renderer.h"
 #include "scene_truth.h"
+#include "study_cost.h"
 #include "study_report.h"
+#include "study_shard.h"
 #include "technique.h"
 
 #include <algorithm>
@@ -38,6 +41,7 @@ struct Combination {
     FilterKind filter;
     int radius;
     int size;
+    double lightSize;  // < 0: the scene's own lights
 };
 
 FilterKind filterFromName(const std::string& name) {
@@ -49,6 +53,9 @@ FilterKind filterFromName(const std::string& name) {
 
 std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::string>& notes) {
     std::vector<Combination> out;
+    std::vector<double> lightSizes = o.lightSizes;
+    if (lightSizes.empty()) lightSizes.push_back(-1.0);
+    for (double lightSize : lightSizes)
     for (const std::string& spec : o.techniques) {
         auto [t, allParams] = parseTechniqueSpec(spec);
         const TechniqueRow& row = techniqueRow(t);
@@ -66,16 +73,18 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
         }
         if (filters.empty()) {
             filters.push_back(row.filters.front());
+            if (lightSize == lightSizes.front())
             notes.push_back(spec + ": none of the requested filters applies; its own (" +
                             std::string(toString(row.filters.front())) + ") is used");
         }
         for (int size : o.mapSizes)
             for (FilterKind f : filters) {
                 if (f == FilterKind::None) {
-                    out.push_back({spec, t, params, momentBias, f, 0, size});
+                    out.push_back({spec, t, params, momentBias, f, 0, size, lightSize});
                     continue;
                 }
-                for (int r : o.radii) out.push_back({spec, t, params, momentBias, f, r, size});
+                for (int r : o.radii)
+                    out.push_back({spec, t, params, momentBias, f, r, size, lightSize});
             }
     }
     return out;
@@ -87,51 +96,41 @@ std::string slug(const std::string& s) {
     return out;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-std::string fmt(const char* f, double a, double b = 0, double c = 0) {
+std::string studyFmt(const char* f, double a, double b = 0, double c = 0) {
     char buf[96];
     std::snprintf(buf, sizeof buf, f, a, b, c);
     return buf;
 }
 
-// The copy pass (1024² RGBA32F, the practical floor of a filter pass), median of 5.
-class CopyYardstick {
-public:
-    explicit CopyYardstick(Renderer& r)
-        : renderer_(r), src_(Texture::create(1024, 1024, GL_RGBA32F)),
-          dst_(Texture::create(1024, 1024, GL_RGBA32F)) {
-        renderer_.copyPass(src_, dst_);  // compile
-        gl::Finish();
-    }
-    double measure() {
-        std::vector<double> ms;
-        for (int i = 0; i < 5; ++i) {
-            const auto t0 = Clock::now();
-            renderer_.copyPass(src_, dst_);
-            gl::Finish();
-            ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-        }
-        return median(ms);
-    }
+// The SAT box of the same variance as the Gaussian of radius r (σ = r / 2): σ·√12 texels.
+double satBoxTexels(int radius) { return 0.5 * radius * std::sqrt(12.0); }
 
-private:
-    Renderer& renderer_;
-    Texture src_, dst_;
-};
-
-// The scene a combination renders: the base scene with the row's map, filter and technique.
-Scene rowScene(const Scene& base, const Combination& c) {
+// The scene with every light of the given size (< 0: as the file has it).
+Scene withLightSize(const Scene& base, double size) {
     Scene s = base;
+    if (size < 0) return s;
+    for (Light& l : s.lights) {
+        l.size = float(size);
+        l.rectangle = glm::vec2(0.0f);  // a disk
+    }
+    return s;
+}
+
+// "truth/light_0.8": where a light size's truth previews go.
+std::string truthFolder(double lightSize) { return "truth/light_" + studyFmt("%g", lightSize); }
+
+// The scene a combination renders: the base scene with the row's light, map, filter and
+// technique.
+Scene rowScene(const Scene& file, const Combination& c) {
+    Scene s = withLightSize(file, c.lightSize);
     s.shadow.mapSize = c.size;
     s.shadow.filter = c.filter;
     s.shadow.gaussianRadius = std::max(c.radius, 1);
     s.shadow.gaussianSigma = 0.0f;  // r / 2
-    s.shadow.satKernelTexels = float(2 * c.radius + 1);
+    // Filters compared at equal variance: the Gaussian's σ = r / 2, so the SAT's box is
+    // σ·√12 = r·√3 texels wide (a box of width w has variance w² / 12; the lookup weighs the
+    // partly covered texels at its edges).
+    s.shadow.satKernelTexels = float(satBoxTexels(c.radius));
     overrideTechnique(s.shadow, c.technique, c.params);
     s.shadow.filter = c.filter;
     if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
@@ -177,6 +176,9 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     fs::create_directories(o.out / "rows");
     fs::create_directories(o.out / "truth");
     const fs::path csv = o.out / "study.csv";
+    if (!o.mergeFrom.empty())
+        summary.notes.push_back("merged " + std::to_string(mergeStudyShards(o.mergeFrom, o.out)) +
+                                " row(s) from " + std::to_string(o.mergeFrom.size()) + " folder(s)");
     std::set<std::string> done;
     for (const StudyRow& r : readStudyCsv(csv)) done.insert(r.key());
 
@@ -188,26 +190,40 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     Renderer reference(referenceLib);
     Renderer solution(ShaderLibrary::forSolution(resolveSolution(o.solution), repoRoot()));
     CopyYardstick copy(solution);
+    const std::string method = costMethod();
 
-    // The truth, once per scene (and from the disk cache when the scene has not changed).
+    // The truth, once per light size (and from the disk cache when the scene has not changed),
+    // traced when a row first needs it.
     SceneTruthOptions to;
     to.rays.samples = o.samples;
     to.cacheDir = o.cacheDir;
-    const SceneTruth truth = computeSceneTruth(base, referenceLib, to);
-    writeTruthFiles(truth, o.out / "truth");
-    summary.truthFromCache = truth.fromCache;
-    summary.truthSeconds = truth.seconds;
-    summary.maxStdError = truth.ray.maxStdError;
-    summary.samplesPerPixel = truth.ray.samplesPerPixel;
-    const Image& reached = truth.ray.reached;
-    summary.notes.push_back(std::string("ray-traced truth: ") +
-                            (truth.fromCache ? "read from the cache" : "traced") + " (" +
-                            std::to_string(truth.ray.samplesPerPixel) + " rays per pixel, max "
-                            "standard error " + fmt("%.4f", truth.ray.maxStdError) + ", key " +
-                            truth.hash.substr(0, 12) + ")");
+    std::map<double, SceneTruth> truths;
+    auto truthFor = [&](double lightSize) -> const SceneTruth& {
+        auto it = truths.find(lightSize);
+        if (it != truths.end()) return it->second;
+        const SceneTruth& t =
+            truths.emplace(lightSize, computeSceneTruth(withLightSize(base, lightSize), referenceLib, to))
+                .first->second;
+        const fs::path dir = o.out / (lightSize < 0 ? std::string("truth") : truthFolder(lightSize));
+        writeTruthFiles(t, dir);
+        summary.truthFromCache = t.fromCache;
+        summary.truthSeconds += t.seconds;
+        summary.maxStdError = std::max(summary.maxStdError, t.ray.maxStdError);
+        summary.samplesPerPixel = std::max(summary.samplesPerPixel, t.ray.samplesPerPixel);
+        summary.notes.push_back(std::string("ray-traced truth") +
+                                (lightSize < 0 ? "" : " (light size " + studyFmt("%g", lightSize) + ")") +
+                                ": " + (t.fromCache ? "read from the cache" : "traced") + " (" +
+                                std::to_string(t.ray.samplesPerPixel) + " rays per pixel, max "
+                                "standard error " + studyFmt("%.4f", t.ray.maxStdError) + ", " +
+                                studyFmt("%.1f s", t.seconds) + ", key " + t.hash.substr(0, 12) + ")");
+        return t;
+    };
+    SceneTruthOptions hashOnly = to;
+    auto sceneHash = [&](double lightSize) { return sceneTruthHash(withLightSize(base, lightSize), hashOnly); };
 
     // One depth map per size (the shadow pass of msm4 through the reference stages, b1 = z),
-    // shared by every row's filtered truth; one filtered truth per (size, kernel).
+    // shared by every row's filtered truth; one filtered truth per (size, kernel): neither
+    // depends on the light's size.
     std::map<int, Image> depthMaps;
     std::map<std::string, Image> filteredTruths;
     auto depthMap = [&](int size) -> const Image& {
@@ -228,15 +244,19 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     std::vector<std::string> notes;
     const std::vector<Combination> combos = combinations(o, notes);
     summary.notes.insert(summary.notes.end(), notes.begin(), notes.end());
-    summary.planned = int(combos.size());
+    const PassPlan basePlan = rowPlan(base);
+    if (basePlan.shadowLights.empty()) throw std::runtime_error(base.path + ": no light casts shadows");
+    const double ownLightSize = base.lights.at(size_t(basePlan.shadowLights.front())).size;
 
     // Which rows share a raw shadow map (raw_map_key.h): count every row still to run per key,
     // so that the first renders the map and keeps it for the others, and the last drops it.
     struct Planned {
         StudyRow row;  // the combination's columns, filled in below
         RawMapKey map;
+        bool mine = true;  // in this shard
     };
     std::vector<Planned> rows;
+    std::vector<std::string> digests;
     RawMapCache shared;
     for (const Combination& c : combos) {
         Planned p;
@@ -247,15 +267,19 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         p.row.filter = toString(c.filter);
         p.row.radius = c.radius;
         p.row.mapSize = c.size;
-        if (!done.count(p.row.key())) {
-            const Scene s = rowScene(base, c);
-            const PassPlan plan = rowPlan(s);
-            if (plan.shadowLights.empty()) throw std::runtime_error(base.path + ": no light casts shadows");
-            p.map = rawMapKey(s, plan, plan.shadowLights.front(), solution.library(), truth.hash);
-            if (!o.shareMaps) p.map.digest.clear();
-            shared.expect(p.map.digest);
-        }
+        p.row.lightSize = c.lightSize < 0 ? ownLightSize : c.lightSize;
+        const Scene s = rowScene(base, c);
+        const PassPlan plan = rowPlan(s);
+        p.map = rawMapKey(s, plan, plan.shadowLights.front(), solution.library(), sceneHash(c.lightSize));
+        if (!o.shareMaps) p.map.digest.clear();
+        digests.push_back(p.map.digest);
         rows.push_back(std::move(p));
+    }
+    const std::vector<bool> mine = shardRows(digests, o.shard, o.shards);
+    for (size_t i = 0; i < rows.size(); ++i) {
+        rows[i].mine = mine[i];
+        if (mine[i]) ++summary.planned;
+        if (mine[i] && !done.count(rows[i].row.key())) shared.expect(rows[i].map.digest);
     }
 
     std::optional<SharedRawMap> pendingKeep;  // the map this row rendered, kept after its frames
@@ -264,33 +288,41 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
     for (const Combination& c : combos) {
         StudyRow& row = rows[size_t(index)].row;
         const RawMapKey& mapKey = rows[size_t(index)].map;
+        const bool inShard = rows[size_t(index)].mine;
         ++index;
+        if (!inShard) continue;
         if (done.count(row.key())) {
             ++summary.skipped;
             continue;
         }
         const std::string what = c.spec + " " + row.filter +
                                  (c.radius ? " r=" + std::to_string(c.radius) : "") + " " +
-                                 std::to_string(c.size) + "²";
+                                 std::to_string(c.size) + "²" +
+                                 (c.lightSize < 0 ? "" : " light " + studyFmt("%g", c.lightSize));
         if (o.progress) {
+            const int at = summary.run + summary.skipped;
             const double elapsed = std::chrono::duration<double>(Clock::now() - sweepStart).count();
-            const double eta = summary.run ? elapsed / summary.run * (summary.planned - index + 1) : 0;
-            progressBar(std::cerr, index - 1, summary.planned, what, eta);
+            const double eta = summary.run ? elapsed / summary.run * (summary.planned - at) : 0;
+            progressBar(std::cerr, at, summary.planned, what, eta);
         }
+        const SceneTruth& truth = truthFor(c.lightSize);
+        const Image& reached = truth.ray.reached;
         const Scene s = rowScene(base, c);
         const PassPlan plan = rowPlan(s);
         const int light = plan.shadowLights.front();
         const MapLayout layout = mapLayout(s.shadow);
-        row.kernelTexels = c.filter == FilterKind::None ? 1.0 : 2.0 * c.radius + 1.0;
+        row.kernelTexels = c.filter == FilterKind::None ? 1.0
+                           : c.filter == FilterKind::Sat ? satBoxTexels(c.radius)
+                                                         : 2.0 * c.radius + 1.0;
         row.bits = techniqueRow(c.technique).bitsPerChannel;
-        row.parameters = "momentBias=" + fmt("%g", s.shadow.momentBias);
+        row.parameters = "momentBias=" + studyFmt("%g", s.shadow.momentBias);
         for (const auto& [name, value] : resolvedParameters(s.shadow))
-            row.parameters += ";" + name + "=" + fmt("%g", value);
+            row.parameters += ";" + name + "=" + studyFmt("%g", value);
         row.mapBytes = size_t(c.size) * c.size * size_t(layout.layers) * size_t(layout.bytesPerTexel);
         row.planBytes = plan.bytes(light);
 
         // The raw map: this row's own shadow pass, or the one an earlier row rendered. A shared
-        // row's shadow pass does not run; its time is the one measured when the map was
+        // row's shadow pass does not run; its cost is the one measured when the map was
         // rendered (frame k takes the rendering row's frame k), so the frame stays whole.
         const SharedRawMap* given = shared.find(mapKey.digest);
         RenderInputs inputs;
@@ -303,9 +335,8 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         row.mapKey = mapKey.label;
         row.mapFrom = given ? given->sourceRow : "";
 
-        // Time: a warm-up frame compiles the programs (and keeps the raw map for later rows);
-        // then `repeats` frames.
-        row.copyMillis = copy.measure();
+        // Cost: a warm-up frame compiles the programs (and keeps the raw map for later rows);
+        // then `repeats` frames, each after a copy pass (study_cost.h).
         RenderResult result;
         {
             RenderInputs first = inputs;
@@ -319,27 +350,32 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             }
         }
         std::vector<std::vector<double>> passMs(plan.passes.size());
-        std::vector<double> frames;
+        std::vector<double> frames, wallFrames, copies;
         std::vector<std::vector<double>> shadowMs;  // per frame, each of the light's shadow passes
         for (int k = 0; k < std::max(o.repeats, 1); ++k) {
+            copies.push_back(copy.measureOnce());
             result = solution.render(s, plan, inputs);
-            double frame = 0;
+            double frame = 0, wall = 0;
             shadowMs.emplace_back();
             for (size_t p = 0; p < plan.passes.size(); ++p) {
-                double ms = result.passMillis.at(p);
+                double ms = result.passCost.at(p);
+                double wallMs = result.passMillis.at(p);
                 if (isShadowPass(p)) {
                     // The j-th shadow pass (a cascade's, the peel) takes the rendering row's j-th.
                     const size_t j = shadowMs.back().size();
                     if (given && !given->shadowMillis.empty()) {
                         const auto& f = given->shadowMillis[size_t(k) % given->shadowMillis.size()];
                         ms = j < f.size() ? f[j] : 0.0;
+                        wallMs = ms;  // its wall time was not kept: the CPU figure stands in
                     }
                     shadowMs.back().push_back(ms);
                 }
                 passMs[p].push_back(ms);
                 frame += ms;
+                wall += wallMs;
             }
             frames.push_back(frame);
+            wallFrames.push_back(wall);
         }
         if (pendingKeep) {
             pendingKeep->shadowMillis = shadowMs;
@@ -349,19 +385,21 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         if (given) ++summary.sharedMaps;
         else ++summary.shadowMapsRendered;
         row.repeats = int(frames.size());
-        row.frameMedian = median(frames);
-        row.frameMin = *std::min_element(frames.begin(), frames.end());
-        row.frameMax = *std::max_element(frames.begin(), frames.end());
-        row.frameRatio = row.copyMillis > 0 ? row.frameMedian / row.copyMillis : 0;
+        const CostStats frameCost = costStats(frames);
+        row.frameMin = frameCost.min;
+        row.frameMedian = frameCost.median;
+        row.frameMax = frameCost.max;
+        row.frameWallMedian = costStats(wallFrames).median;
+        row.copyMillis = costStats(copies).min;
+        row.frameRatio = row.copyMillis > 0 ? row.frameMin / row.copyMillis : 0;
+        row.costMethod = method;
         std::vector<double> medians;
         for (size_t p = 0; p < plan.passes.size(); ++p) {
-            const auto& v = passMs[p];
-            medians.push_back(median(v));
+            const CostStats st = costStats(passMs[p]);
+            medians.push_back(st.median);
             row.passTimes += (p ? ";" : "") + std::string(toString(plan.passes[p].kind)) +
                              (plan.passes[p].light >= 0 ? "@L" + std::to_string(plan.passes[p].light) : "") +
-                             "=" + fmt("%.3f/%.3f/%.3f", medians.back(),
-                                       *std::min_element(v.begin(), v.end()),
-                                       *std::max_element(v.begin(), v.end())) +
+                             "=" + studyFmt("%.3f/%.3f/%.3f", st.min, st.median, st.max) +
                              (given && isShadowPass(p) ? "(shared)" : "");
         }
 
@@ -383,12 +421,13 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
                      "); depth map " + std::to_string(c.size) + "² " +
                      (haveDepth ? "shared" : "rendered") + "; filtered truth " +
                      (haveFiltered ? "shared" : "computed") + "; technique map " +
-                     (given ? "shared from " + given->sourceRow + " (its shadow-pass time)"
+                     (given ? "shared from " + given->sourceRow + " (its shadow-pass cost)"
                             : mapKey.shareable() && o.shareMaps ? "rendered (shared with later rows)"
                                                                 : "rendered");
         const std::string name = slug(row.spec) + "_" + row.filter +
                                  (c.radius ? "_r" + std::to_string(c.radius) : "") + "_" +
-                                 std::to_string(c.size);
+                                 std::to_string(c.size) +
+                                 (c.lightSize < 0 ? "" : "_light" + studyFmt("%g", c.lightSize));
         row.image = "rows/" + name + "_shadow.png";
         row.errorMap = "rows/" + name + "_error.png";
         writePngPreview(shadow, o.out / row.image, false);
@@ -408,6 +447,23 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         progressBar(std::cerr, summary.planned, summary.planned, "done", 0);
         std::cerr << "\n";
     }
+    // The table in the sweep's order (a resumed or merged run appended rows out of it); rows of
+    // other settings stay, after these.
+    {
+        std::vector<StudyRow> table = readStudyCsv(csv), ordered;
+        std::map<std::string, size_t> at;
+        for (size_t i = 0; i < table.size(); ++i) at[table[i].key()] = i;
+        std::vector<bool> placed(table.size(), false);
+        for (const Planned& p : rows) {
+            auto it = at.find(p.row.key());
+            if (it == at.end() || placed[it->second]) continue;
+            ordered.push_back(table[it->second]);
+            placed[it->second] = true;
+        }
+        for (size_t i = 0; i < table.size(); ++i)
+            if (!placed[i]) ordered.push_back(table[i]);
+        if (!ordered.empty()) writeStudyCsv(csv, ordered);
+    }
     summary.notes.push_back(std::to_string(depthMaps.size()) + " depth map(s) and " +
                             std::to_string(filteredTruths.size()) +
                             " filtered truth(s) computed for " + std::to_string(summary.run) +
@@ -416,9 +472,10 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         "technique maps: " + std::to_string(summary.shadowMapsRendered) + " row(s) rendered their own, " +
         std::to_string(summary.sharedMaps) + " lit with one an earlier row rendered (" +
         std::to_string(shared.kept()) + " map(s) kept for sharing" +
-        (o.shareMaps ? "" : "; sharing off") + "); a shared row reports the shadow-pass time "
+        (o.shareMaps ? "" : "; sharing off") + "); a shared row reports the shadow-pass cost "
         "measured when its map was rendered");
-    if (o.report) writeStudyReport(o.out, readStudyCsv(csv), log, o.headline);
+    summary.notes.push_back("cost: " + method);
+    if (o.report && o.shards == 1) writeStudyReport(o.out, readStudyCsv(csv), log, o.headline);
     return summary;
 }
 

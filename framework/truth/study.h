@@ -26,8 +26,12 @@ struct StudyOptions {
     fs::path scene;
     std::vector<std::string> techniques;  // specs, "msm4" or "vsm:bleedReduction=0.3"
     std::vector<int> mapSizes = {256, 512, 1024, 2048};
-    std::vector<int> radii = {1, 2, 4, 8, 16};      // Gaussian r; SAT box 2r + 1 texels
+    std::vector<int> radii = {1, 2, 4, 8, 16};      // Gaussian r; SAT box r·√3 texels (equal variance)
     std::vector<std::string> filters = {"gaussian", "sat"};
+    // The light-size axis: every light of the scene gets each size in turn (0: a point light,
+    // scored against the hard truth; > 0: a disk of that diameter, against its area truth).
+    // Empty: the scene's own lights only.
+    std::vector<double> lightSizes;
     int repeats = 3;
     std::string solution = "reference";
     int imageSize = 0;     // > 0: the main camera renders imageSize² (keeping nothing else)
@@ -39,6 +43,11 @@ struct StudyOptions {
     bool report = true;    // draw the plots and index.html at the end
     bool shareMaps = true; // share raw shadow maps between rows (false: every row renders its own)
     std::string headline;  // machine, Mesa and LLVM versions, for the page
+    // Run only shard K of N (1-based; study_shard.h): whole groups of rows sharing a raw map.
+    int shard = 1, shards = 1;
+    // Study folders of shards whose rows (and images) are merged into `out` before the sweep,
+    // which then runs only what is still missing and writes the table in the sweep's order.
+    std::vector<fs::path> mergeFrom;
 };
 
 struct StudySummary {

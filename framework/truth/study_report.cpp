@@ -54,6 +54,12 @@ std::vector<const StudyRow*> front(const std::vector<const StudyRow*>& rows, boo
     return out;
 }
 
+// The truth's preview for a light size: its own folder when the study swept light sizes.
+std::string truthImage(const fs::path& dir, double lightSize) {
+    const std::string own = "truth/light_" + num(lightSize, "%g") + "/truth.png";
+    return fs::exists(dir / own) ? own : "truth/truth.png";
+}
+
 }  // namespace
 
 std::vector<size_t> paretoFront(const std::vector<double>& x, const std::vector<double>& y) {
@@ -75,36 +81,61 @@ std::vector<size_t> paretoFront(const std::vector<double>& x, const std::vector<
 void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, std::ostream& log,
                       const std::string& headline) {
     if (rows.empty()) throw std::runtime_error(dir.string() + "/study.csv: no rows to plot");
+    // One set of plots per light size: errors against different truths do not share an axis.
+    std::vector<double> lightSizes;
+    for (const StudyRow& r : rows)
+        if (std::find(lightSizes.begin(), lightSizes.end(), r.lightSize) == lightSizes.end())
+            lightSizes.push_back(r.lightSize);
+    const std::string title = rows.front().scene;
+    struct PlotSet {
+        double lightSize;
+        std::string name;  // "pareto" for the first light size, "pareto_light_0.8" for others
+        std::vector<const StudyRow*> timeFront;
+    };
+    std::vector<PlotSet> sets;
     std::vector<std::string> specs;
     std::map<std::string, std::vector<const StudyRow*>> bySpec;
-    std::vector<const StudyRow*> all;
     for (const StudyRow& r : rows) {
         if (!bySpec.count(r.spec)) specs.push_back(r.spec);
         bySpec[r.spec].push_back(&r);
-        all.push_back(&r);
     }
-    fs::create_directories(dir / "plots");
-    std::string names;
-    for (size_t i = 0; i < specs.size(); ++i) {
-        const auto& rs = bySpec[specs[i]];
-        writeDat(dir / "plots" / ("tech_" + std::to_string(i + 1) + ".dat"), rs);
-        writeDat(dir / "plots" / ("techfront_" + std::to_string(i + 1) + ".dat"), front(rs, false));
-        writeDat(dir / "plots" / ("techfront_bytes_" + std::to_string(i + 1) + ".dat"), front(rs, true));
-        names += (i ? " " : "") + specs[i];
+    for (double lightSize : lightSizes) {
+        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + num(lightSize, "%g"), {}};
+        const fs::path plots = dir / (sets.empty() ? "plots" : "plots_light_" + num(lightSize, "%g"));
+        fs::create_directories(plots);
+        std::vector<const StudyRow*> all;
+        std::string names;
+        int n = 0;
+        for (const std::string& spec : specs) {
+            std::vector<const StudyRow*> rs;
+            for (const StudyRow* r : bySpec[spec])
+                if (r->lightSize == lightSize) rs.push_back(r);
+            if (rs.empty()) continue;
+            all.insert(all.end(), rs.begin(), rs.end());
+            ++n;
+            writeDat(plots / ("tech_" + std::to_string(n) + ".dat"), rs);
+            writeDat(plots / ("techfront_" + std::to_string(n) + ".dat"), front(rs, false));
+            writeDat(plots / ("techfront_bytes_" + std::to_string(n) + ".dat"), front(rs, true));
+            names += (n > 1 ? " " : "") + spec;
+        }
+        set.timeFront = front(all, false);
+        writeDat(plots / "front.dat", set.timeFront);
+        writeDat(plots / "front_bytes.dat", front(all, true));
+        const fs::path script = repoRoot() / "tools" / "study_plots.gp";
+        const std::string setTitle = title + (lightSizes.size() > 1 || lightSize > 0
+                                                  ? ", light size " + num(lightSize, "%g")
+                                                  : "");
+        const std::string cmd = "gnuplot -e \"dir='" + plots.string() + "'; out='" +
+                                (dir / set.name).string() + "'; names='" + names + "'; title='" +
+                                setTitle + "'\" '" + script.string() + "' > '" +
+                                (plots / "gnuplot.log").string() + "' 2>&1";
+        // gnuplot's warnings (a one-point series has an "empty range") go to gnuplot.log.
+        if (std::system(cmd.c_str()) != 0)
+            throw std::runtime_error("gnuplot failed (" + cmd + "; see gnuplot.log); is "
+                                     "gnuplot-nox installed?");
+        log << "wrote " << (dir / set.name).string() << ".{svg,png}, " << set.name << "_bytes.{svg,png}\n";
+        sets.push_back(std::move(set));
     }
-    const auto timeFront = front(all, false);
-    writeDat(dir / "plots" / "front.dat", timeFront);
-    writeDat(dir / "plots" / "front_bytes.dat", front(all, true));
-    const fs::path script = repoRoot() / "tools" / "study_plots.gp";
-    const std::string title = rows.front().scene;
-    const std::string cmd = "gnuplot -e \"dir='" + (dir / "plots").string() + "'; names='" + names +
-                            "'; title='" + title + "'\" '" + script.string() + "' > '" +
-                            (dir / "plots" / "gnuplot.log").string() + "' 2>&1";
-    // gnuplot's warnings (a one-point series has an "empty range") go to plots/gnuplot.log.
-    if (std::system(cmd.c_str()) != 0)
-        throw std::runtime_error("gnuplot failed (" + cmd + "; see plots/gnuplot.log); is "
-                                 "gnuplot-nox installed?");
-    log << "wrote " << (dir / "pareto.svg").string() << ", pareto.png, pareto_bytes.{svg,png}\n";
 
     std::ofstream page(dir / "index.html");
     page << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Shadowlab study: "
@@ -114,42 +145,56 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
             "margin:4px}figure img{width:256px;image-rendering:pixelated}figcaption{font-size:80%}"
             "</style></head><body>\n<h1>Accuracy against cost: " << html(title) << "</h1>\n";
     if (!headline.empty()) page << "<p>" << html(headline) << "</p>\n";
-    page << "<p>Error: G against the ray-traced truth over the pixels the light reaches. Time: the "
-            "frame's median over repeats divided by a 1024² RGBA32F copy pass timed in the same run. "
+    page << "<p>Error: G against the ray-traced truth over the pixels the light reaches. Cost: the "
+            "frame's CPU time across llvmpipe's threads (" << html(rows.front().costMethod)
+         << "), minimum over repeats, divided by a 1024² RGBA32F copy pass's, measured the same "
+            "way and interleaved with the frames. "
             "Every figure here is drawn from <a href=\"study.csv\">study.csv</a>.</p>\n"
-            "<img src=\"pareto.svg\" alt=\"error against frame time\" width=\"900\">\n"
-            "<img src=\"pareto_bytes.svg\" alt=\"error against map bytes\" width=\"900\">\n"
-            "<h2>Pareto-optimal configurations (error against time)</h2>\n<table><tr><th>technique"
-            "</th><th>filter</th><th>r</th><th>map</th><th>bytes</th><th>frame/copy</th>"
-            "<th>RMSE truth</th><th>p99 truth</th><th>RMSE filtered</th><th>leak area</th></tr>\n";
-    for (const StudyRow* r : timeFront)
-        page << "<tr><td class=l>" << html(r->spec) << "</td><td class=l>" << r->filter << "</td><td>"
-             << r->radius << "</td><td>" << r->mapSize << "²</td><td>" << r->mapBytes << "</td><td>"
-             << num(r->frameRatio, "%.2f") << "</td><td>" << num(r->truth.rmse) << "</td><td>"
-             << num(r->truth.p99) << "</td><td>" << num(r->filtered.rmse) << "</td><td>"
-             << num(r->truth.leakArea) << "</td></tr>\n";
-    page << "</table>\n<h2>Per technique: its most accurate configuration</h2>\n";
+            ;
+    for (const PlotSet& set : sets) {
+        page << "<h2>Light size " << num(set.lightSize, "%g")
+             << (set.lightSize > 0 ? " (area light: soft truth)" : " (point light: hard truth)")
+             << "</h2>\n<img src=\"" << set.name << ".svg\" alt=\"error against cost\" width=\"900\">\n"
+             << "<img src=\"" << set.name << "_bytes.svg\" alt=\"error against map bytes\" width=\"900\">\n"
+                "<h3>Pareto-optimal configurations (error against cost)</h3>\n<table><tr><th>technique"
+                "</th><th>filter</th><th>r</th><th>map</th><th>bytes</th><th>frame/copy</th>"
+                "<th>RMSE truth</th><th>p99 truth</th><th>RMSE filtered</th><th>leak area</th></tr>\n";
+        for (const StudyRow* r : set.timeFront)
+            page << "<tr><td class=l>" << html(r->spec) << "</td><td class=l>" << r->filter << "</td><td>"
+                 << r->radius << "</td><td>" << r->mapSize << "²</td><td>" << r->mapBytes << "</td><td>"
+                 << num(r->frameRatio, "%.2f") << "</td><td>" << num(r->truth.rmse) << "</td><td>"
+                 << num(r->truth.p99) << "</td><td>" << num(r->filtered.rmse) << "</td><td>"
+                 << num(r->truth.leakArea) << "</td></tr>\n";
+        page << "</table>\n";
+    }
+    page << "<h2>Per technique: its most accurate configuration</h2>\n";
+    for (double lightSize : lightSizes)
     for (const std::string& spec : specs) {
-        const auto& rs = bySpec[spec];
+        std::vector<const StudyRow*> rs;
+        for (const StudyRow* r : bySpec[spec])
+            if (r->lightSize == lightSize) rs.push_back(r);
+        if (rs.empty()) continue;
         const StudyRow* best = *std::min_element(rs.begin(), rs.end(), [](auto a, auto b) {
             return a->truth.rmse < b->truth.rmse;
         });
-        page << "<h3>" << html(spec) << " — " << html(label(*best)) << ": RMSE "
+        page << "<h3>" << html(spec) << " — " << html(label(*best)) << ", light size "
+             << num(lightSize, "%g") << ": RMSE "
              << num(best->truth.rmse) << " (truth), " << num(best->filtered.rmse)
              << " (filtered truth), frame/copy " << num(best->frameRatio, "%.2f") << "</h3>\n"
              << "<figure><img src=\"" << best->image << "\" alt=\"G\"><figcaption>G, " << html(spec)
              << "</figcaption></figure><figure><img src=\"" << best->errorMap
              << "\" alt=\"error\"><figcaption>G − truth (red: leaks, blue: too dark)</figcaption>"
-                "</figure><figure><img src=\"truth/truth.png\" alt=\"truth\"><figcaption>ray-traced "
-                "truth</figcaption></figure>\n";
+                "</figure><figure><img src=\"" << truthImage(dir, best->lightSize)
+             << "\" alt=\"truth\"><figcaption>ray-traced truth</figcaption></figure>\n";
     }
     page << "<h2>All rows</h2>\n<table><tr><th>technique</th><th>filter</th><th>r</th><th>map</th>"
-            "<th>frame ms</th><th>frame/copy</th><th>RMSE truth</th><th>max</th><th>RMSE filtered"
+            "<th>light</th><th>frame CPU ms (min / median / max)</th><th>frame/copy</th><th>RMSE truth</th><th>max</th><th>RMSE filtered"
             "</th><th>reused</th></tr>\n";
     for (const StudyRow& r : rows)
         page << "<tr><td class=l>" << html(r.spec) << "</td><td class=l>" << r.filter << "</td><td>"
-             << r.radius << "</td><td>" << r.mapSize << "²</td><td>" << num(r.frameMedian, "%.2f")
-             << "</td><td>" << num(r.frameRatio, "%.2f") << "</td><td>" << num(r.truth.rmse)
+             << r.radius << "</td><td>" << r.mapSize << "²</td><td>" << num(r.lightSize, "%g")
+             << "</td><td>" << num(r.frameMin, "%.2f") << " / " << num(r.frameMedian, "%.2f")
+             << " / " << num(r.frameMax, "%.2f") << "</td><td>" << num(r.frameRatio, "%.2f") << "</td><td>" << num(r.truth.rmse)
              << "</td><td>" << num(r.truth.max) << "</td><td>" << num(r.filtered.rmse)
              << "</td><td class=l>" << html(r.reused) << "</td></tr>\n";
     page << "</table>\n</body></html>\n";

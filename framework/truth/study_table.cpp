@@ -12,8 +12,9 @@ namespace {
 const std::vector<std::string>& columns() {
     static const std::vector<std::string> c = {
         "scene", "solution", "technique", "spec", "filter", "radius", "kernel_texels", "map_size",
-        "bits", "parameters", "map_bytes", "plan_bytes", "repeats", "frame_ms_median",
-        "frame_ms_min", "frame_ms_max", "pass_ms", "copy_ms", "frame_over_copy",
+        "light_size", "bits", "parameters", "map_bytes", "plan_bytes", "repeats",
+        "frame_cost_min", "frame_cost_median", "frame_cost_max", "frame_wall_ms_median",
+        "pass_cost", "copy_cost", "frame_over_copy", "cost_method",
         "truth_rmse", "truth_max", "truth_p99", "truth_over_0.05", "truth_leak_area",
         "truth_dark_area", "filtered_rmse", "filtered_max", "filtered_p99",
         "filtered_over_0.05", "filtered_leak_area", "filtered_dark_area", "pixels", "reused",
@@ -65,7 +66,7 @@ void errorFields(std::vector<std::string>& f, const ShadowError& e) {
 
 std::string StudyRow::key() const {
     return scene + "|" + solution + "|" + spec + "|" + filter + "|" + std::to_string(radius) +
-           "|" + std::to_string(mapSize);
+           "|" + std::to_string(mapSize) + "|light " + csvNumber(lightSize);
 }
 
 const std::string& studyCsvHeader() {
@@ -80,11 +81,14 @@ const std::string& studyCsvHeader() {
 std::string toCsvLine(const StudyRow& r) {
     std::vector<std::string> f = {r.scene, r.solution, r.technique, quoted(r.spec), r.filter,
                                   std::to_string(r.radius), csvNumber(r.kernelTexels),
-                                  std::to_string(r.mapSize), std::to_string(r.bits),
-                                  quoted(r.parameters), std::to_string(r.mapBytes),
-                                  std::to_string(r.planBytes), std::to_string(r.repeats),
-                                  csvNumber(r.frameMedian), csvNumber(r.frameMin), csvNumber(r.frameMax),
-                                  quoted(r.passTimes), csvNumber(r.copyMillis), csvNumber(r.frameRatio)};
+                                  std::to_string(r.mapSize), csvNumber(r.lightSize),
+                                  std::to_string(r.bits), quoted(r.parameters),
+                                  std::to_string(r.mapBytes), std::to_string(r.planBytes),
+                                  std::to_string(r.repeats), csvNumber(r.frameMin),
+                                  csvNumber(r.frameMedian), csvNumber(r.frameMax),
+                                  csvNumber(r.frameWallMedian), quoted(r.passTimes),
+                                  csvNumber(r.copyMillis), csvNumber(r.frameRatio),
+                                  quoted(r.costMethod)};
     errorFields(f, r.truth);
     errorFields(f, r.filtered);
     f.push_back(std::to_string(r.truth.pixels));
@@ -127,15 +131,17 @@ std::vector<StudyRow> readStudyCsv(const fs::path& path) {
             r.radius = std::stoi(f[i++]);
             r.kernelTexels = std::stod(f[i++]);
             r.mapSize = std::stoi(f[i++]);
+            r.lightSize = std::stod(f[i++]);
             r.bits = std::stoi(f[i++]);
             r.parameters = f[i++];
             r.mapBytes = std::stoull(f[i++]);
             r.planBytes = std::stoull(f[i++]);
             r.repeats = std::stoi(f[i++]);
-            r.frameMedian = std::stod(f[i++]), r.frameMin = std::stod(f[i++]);
-            r.frameMax = std::stod(f[i++]);
+            r.frameMin = std::stod(f[i++]), r.frameMedian = std::stod(f[i++]);
+            r.frameMax = std::stod(f[i++]), r.frameWallMedian = std::stod(f[i++]);
             r.passTimes = f[i++];
             r.copyMillis = std::stod(f[i++]), r.frameRatio = std::stod(f[i++]);
+            r.costMethod = f[i++];
             for (ShadowError* e : {&r.truth, &r.filtered}) {
                 e->rmse = std::stod(f[i++]), e->max = std::stod(f[i++]);
                 e->p99 = std::stod(f[i++]), e->over005 = std::stod(f[i++]);
@@ -167,6 +173,17 @@ void appendStudyRow(const fs::path& path, const StudyRow& row) {
     if (cutShort) out << "\n";
     out << toCsvLine(row) << "\n";
     out.flush();
+}
+
+void writeStudyCsv(const fs::path& path, const std::vector<StudyRow>& rows) {
+    const fs::path tmp = path.string() + ".tmp";
+    {
+        std::ofstream out(tmp, std::ios::trunc);
+        if (!out) throw std::runtime_error(tmp.string() + ": cannot write the study table");
+        out << studyCsvHeader() << "\n";
+        for (const StudyRow& r : rows) out << toCsvLine(r) << "\n";
+    }
+    fs::rename(tmp, path);  // whole or not at all
 }
 
 }  // namespace sl

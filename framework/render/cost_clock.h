@@ -1,0 +1,31 @@
+// cost_clock: what a pass costs, measured so that the host's load moves it as little as
+// possible: the cost axis of `shadowlab study` and `shadowlab bench`. Two clocks:
+// - "cpu" (default): the CPU time of every thread of the process (CLOCK_PROCESS_CPUTIME_ID: the
+//   user + system time getrusage reports, in nanoseconds) around the pass's glFinish. llvmpipe
+//   runs a pass on its own LP_NUM_THREADS threads while the caller waits, so this is the work
+//   the pass took; time spent waiting for a core another process holds is not in it.
+// - "instructions" (SHADOWLAB_COST=instructions, run under tools/cost_exact.sh): the
+//   instructions every thread executed, counted by valgrind's callgrind (millions), which no
+//   other process can change. The clock calls two marker functions callgrind is told about
+//   (zero the counts before one, dump them after the other) and reads the dump back.
+// Measurements must not nest: one begin, one end.
+#pragma once
+
+#include <string>
+
+namespace sl {
+
+// CPU time of every thread of this process so far, in milliseconds.
+double processCpuMillis();
+
+// Start measuring (before the work is issued; the caller has glFinished what came before).
+void costBegin();
+// The cost since costBegin (after the work's glFinish): CPU ms, or millions of instructions.
+double costEnd();
+
+// "CPU ms: process CPU time (all threads) around glFinish, LP_NUM_THREADS=2", or the
+// instructions' equivalent: the unit and the method, for the output that reports a cost
+// (llvmpipe's CPU time grows with the threads it keeps busy, so figures compare at one count).
+std::string costMethod();
+
+}  // namespace sl
