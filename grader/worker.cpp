@@ -130,8 +130,8 @@ void runWorker(const WorkerArgs& a) {
             plan = planPasses(scene);
             std::erase_if(plan.passes,
                           [](const PlannedPass& p) { return p.kind != PassKind::Shadow; });
-        } else {
-            plan = planPasses(scene);
+        } else {  // only the reference's render keeps the filtered map (the msm stage's input)
+            plan = planPasses(scene, {.resolveSat = a.stage == "reference"});
         }
         result = renderer.render(scene, plan);
         if (a.stage == "moments")  // relativeDepth outside [near, far] too (depth_ladder.h)

@@ -60,9 +60,9 @@ PlannedTexture tex(int light, int camera, std::string role, std::string format, 
 namespace {
 
 // The maps and passes of light i (its cascade c: every cascade has a full set of its own).
-void planLightMaps(PassPlan& plan, const Scene& scene, int i, int c, const std::string& light,
+void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
                    const PlanOptions& options) {
-    const ShadowEffect& fx = scene.shadow;
+    const ShadowEffect& fx = plan.effect;
     const TechniqueRow& row = techniqueRow(fx.technique);
     const MapLayout map = mapLayout(fx);
     const int n = fx.mapSize;
@@ -122,20 +122,55 @@ int cascadeCount(const Scene& scene, int i) {
     return l.type == LightType::Directional && !scene.cameras.empty() ? l.cascades : 1;
 }
 
+// Why the scene's filter changes no image, or "" if it does: a Gaussian of radius 0 is one
+// tap of weight 1, the map itself to the bit. A SAT box of one texel is not left out: it is
+// the bilinear read lighting makes without a filter in exact arithmetic, but llvmpipe weighs
+// a bilinear read with 8 bits, and 4MSM turns that into G up to 0.9 apart at shadow edges
+// (scenes/ladder/softness_1: 5 % of its pixels), so the table stays.
+std::string identityFilter(const ShadowEffect& fx) {
+    if (techniqueRow(fx.technique).filterInLighting) return "";
+    if (fx.filter == FilterKind::Gaussian && fx.gaussianRadius == 0)
+        return "gaussian filter of radius 0 (one tap of weight 1): no filter passes";
+    return "";
+}
+
+bool anyCaster(const Scene& scene) {
+    for (const Object& o : scene.objects)
+        if (o.castsShadows) return true;
+    return false;
+}
+
 }  // namespace
+
+bool kernelReachesImage(const ShadowEffect& fx) {
+    return fx.filter != FilterKind::None && !techniqueRow(fx.technique).blockerSearch;
+}
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
     PassPlan plan;
-    const ShadowEffect& fx = scene.shadow;
+    plan.effect = scene.shadow;
+    plan.resolvedSat = options.resolveSat;
+    if (std::string why = identityFilter(scene.shadow); !why.empty()) {
+        plan.effect.filter = FilterKind::None;
+        plan.leftOut.push_back(why);
+    }
+    const ShadowEffect& fx = plan.effect;
     const TechniqueRow& row = techniqueRow(fx.technique);
     const MapLayout map = mapLayout(fx);
+    const bool casters = anyCaster(scene);
     std::vector<Bounds> bounds;  // only when a light has cascades (meshes are built for it)
     for (int i = 0; i < int(scene.lights.size()); ++i) {
         if (!scene.lights[i].castsShadows) continue;
+        if (!casters) {  // its map would be empty: G = 0 everywhere, as without a map
+            plan.leftOut.push_back("light " + std::to_string(i) +
+                                   ": no object casts shadows (every object has castsShadows "
+                                   "false): no shadow map, no filter");
+            continue;
+        }
         plan.shadowLights.push_back(i);
         const int cascades = cascadeCount(scene, i);
         if (cascades == 1) {
-            planLightMaps(plan, scene, i, 0, "light " + std::to_string(i), options);
+            planLightMaps(plan, i, 0, "light " + std::to_string(i), options);
             continue;
         }
         if (bounds.empty()) bounds = sceneBounds(scene);
@@ -145,10 +180,14 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
             cascadeSplits(range.x, range.y, cascades, l.cascadeSplit, l.cascadeLambda);
         for (int c = 0; c < cascades; ++c) {
             plan.cascades.push_back({i, c, d[c], d[c + 1]});
-            planLightMaps(plan, scene, i, c,
+            planLightMaps(plan, i, c,
                           "light " + std::to_string(i) + " cascade " + std::to_string(c), options);
         }
     }
+    if (fx.filter == FilterKind::Sat && !row.filterInLighting && !plan.shadowLights.empty() &&
+        !options.resolveSat)
+        plan.leftOut.push_back("sat-resolve: the moments_filtered image is not asked for "
+                               "(lighting reads the table; render --filtered-moments makes it)");
     if (!plan.shadowLights.empty()) {
         plan.momentChannels = map.channels * map.layers;
         if (fx.technique == Technique::Csm)
@@ -175,10 +214,10 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis) {
     std::string out = "plan for " + scene.name + " (" + std::to_string(plan.passes.size()) +
-                      " passes, technique " + toString(scene.shadow.technique) + ", filter " +
-                      toString(scene.shadow.filter) + ", moments " +
+                      " passes, technique " + toString(plan.effect.technique) + ", filter " +
+                      toString(plan.effect.filter) + ", moments " +
                       std::to_string(plan.momentChannels) + " channels):\n";
-    const auto params = resolvedParameters(scene.shadow);
+    const auto params = resolvedParameters(plan.effect);
     if (!params.empty()) {
         out += "  parameters:";
         for (const auto& [name, value] : params) {
@@ -222,6 +261,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
         }
         out += "\n";
     }
+    for (const std::string& why : plan.leftOut) out += "  left out: " + why + "\n";
     char line[96];
     std::snprintf(line, sizeof line, "  shadow-map memory %.2f MiB\n", plan.bytes() / 1048576.0);
     out += line;

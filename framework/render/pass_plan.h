@@ -62,20 +62,28 @@ struct PlannedCascade {
 };
 
 struct PlanOptions {
-    // Produce the filtered map of a SAT scene (the SAT itself is not a moment map): a
-    // SatResolve pass evaluates the solution's satBoxAverage at every texel centre, with the
-    // scene's kernel. The grader and `render` want it; an interactive viewer and the study's
-    // timings do not (lighting reads the table itself).
-    bool resolveSat = true;
+    // Make the filtered map of a SAT scene, the `moments_filtered` image (the table itself is
+    // not a moment map): a SatResolve pass evaluates the solution's satBoxAverage at every
+    // texel centre, with the scene's kernel. No frame needs it (lighting reads the table), and
+    // it costs more than the lighting pass, so only a caller that shows or grades that image
+    // asks for it: the goldens, the grader's reference render, `render --filtered-moments`,
+    // the viewer while it shows that image.
+    bool resolveSat = false;
 };
 
 struct PassPlan {
+    // The effect the passes run: the scene's, with the filter dropped where it would change
+    // nothing (a Gaussian of radius 0, a SAT box of one texel). Everything after planning
+    // reads this, not the scene's.
+    ShadowEffect effect;
     std::vector<PlannedPass> passes;
     std::vector<int> shadowLights;  // lights that get a shadow map, in order
     int momentChannels = 0;         // channels the map stores in all (MSM: 4; CSM: 2M; none: 0)
     std::vector<PlannedTexture> textures;  // everything the renderer allocates, nothing else
     std::vector<std::string> defines;      // the permutation of the shadow/lighting programs
     std::vector<PlannedCascade> cascades;  // lights with cascades > 1 only, light by light
+    std::vector<std::string> leftOut;      // what the scene declares but cannot see, and why
+    bool resolvedSat = false;              // planned with PlanOptions::resolveSat
 
     const PlannedTexture* texture(int light, const std::string& role, int cascade = 0) const;
     // Of one light's textures (one cascade's, or all with -1); light -1: all shadow textures.
@@ -85,8 +93,15 @@ struct PassPlan {
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options = {});
 
+// Whether the filter's kernel (Gaussian radius and sigma, SAT box) reaches the lit image: not
+// with the filter `none`, nor for a row that chooses its box per pixel (msm-soft). Renders
+// that differ only in a kernel that does not reach the image are the same frame (the study
+// renders one of them).
+bool kernelReachesImage(const ShadowEffect& fx);
+
 // The plan as text: technique and parameters, then one numbered line per pass with the format
-// and memory it writes and why it runs; with `millis` (one per pass) the time of each.
+// and memory it writes and why it runs, then what it left out and why; with `millis` (one per
+// pass) the time of each.
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis = nullptr);
 

@@ -57,7 +57,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     if (scene.lights.size() > 4) throw std::runtime_error(scene.path + ": at most 4 lights");
     RenderResult result;
     SceneGeometry geometry(scene);
-    const ShadowEffect& fx = scene.shadow;
+    const ShadowEffect& fx = plan.effect;
     const TechniqueRow& row = techniqueRow(fx.technique);
     const std::vector<std::string>& defines = plan.defines;
 

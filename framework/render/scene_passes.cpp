@@ -90,7 +90,7 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
                      const std::vector<LightView>& views, ShadowMapSet& maps,
                      const SceneGeometry& geometry, Texture& colorTarget,
                      Texture& shadowTarget, Texture& depthTarget) {
-    const ShadowEffect& fx = scene.shadow;
+    const ShadowEffect& fx = plan.effect;
     colorTarget = Texture::create(cam.width, cam.height, GL_RGBA32F);
     shadowTarget = Texture::create(cam.width, cam.height, GL_R32F);
     depthTarget = Texture::create(cam.width, cam.height, GL_DEPTH_COMPONENT32F);
