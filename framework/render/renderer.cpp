@@ -5,6 +5,7 @@
 #include "render_internal.h"
 
 #include "cascades.h"
+#include "scene_limits.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -54,7 +55,8 @@ Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                               const RenderInputs& inputs) {
-    if (scene.lights.size() > 4) throw std::runtime_error(scene.path + ": at most 4 lights");
+    if (scene.lights.size() > size_t(kMaxLights))  // the loader refuses such a scene first
+        throw std::runtime_error(scene.path + ": at most " + std::to_string(kMaxLights) + " lights");
     RenderResult result;
     SceneGeometry geometry(scene);
     const ShadowEffect& fx = plan.effect;

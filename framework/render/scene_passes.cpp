@@ -2,6 +2,8 @@
 // and the lighting pass that shades a camera's view from every light's (filtered) maps.
 #include "render_internal.h"
 
+#include "scene_limits.h"
+
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
@@ -20,7 +22,7 @@ void setTechniqueParameters(const GlProgram& p, const ShadowEffect& fx) {
 // The uniforms of a technique's lighting permutation: its parameters as u<Name>,
 // the sampler units, the map size and the Gaussian weights (PCF uses the moment filter's).
 void setTechniqueUniforms(const GlProgram& p, const ShadowEffect& fx, int unitsUsed) {
-    constexpr int kMaxMaps = 16;  // SL_MAX_MAPS in shaders/techniques/common.glsl
+    constexpr int kMaxMaps = kMaxShadowMaps;  // SL_MAX_MAPS in the shaders
     if (unitsUsed > kMaxMaps)
         throw std::runtime_error("the shadow maps need " + std::to_string(unitsUsed) +
                                  " texture units; the lighting pass has " +
@@ -111,8 +113,7 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
     p.set("uMomentBias", fx.momentBias);
     p.set("uDepthBias", fx.depthBias);
     p.set("uSatKernel", fx.satKernelTexels);
-    constexpr int kMaxCascades = 4;  // SL_MAX_CASCADES in lighting.frag
-    constexpr int kSlots = 4 * kMaxCascades;
+    constexpr int kSlots = kMaxLights * kMaxCascades;  // SL_MAX_LIGHTS · SL_MAX_CASCADES
     std::vector<glm::vec3> eye, forward, color;
     std::vector<int> isSpot, mapIndex, cascades, units(kSlots);
     for (int k = 0; k < kSlots; ++k) units[k] = k;
