@@ -59,7 +59,7 @@ TEST(PassPlan, SatIsTwoScansAndAResolveOnlyWhenAsked) {
     const PassPlan plain = planPasses(s);
     EXPECT_EQ(kinds(plain), (std::vector<PassKind>{PassKind::Shadow, PassKind::SatRows,
                                                    PassKind::SatColumns, PassKind::Lighting}));
-    EXPECT_EQ(plain.texture(0, "filtered"), nullptr);
+    EXPECT_EQ(plain.texture(0, TextureRole::Filtered), nullptr);
     const std::string text = explainPlan(s, plain);
     EXPECT_NE(text.find("left out: sat-resolve"), std::string::npos) << text;
     EXPECT_EQ(kinds(planPasses(s, {.resolveSat = true})),
@@ -100,7 +100,7 @@ TEST(PassPlan, AFilterThatChangesNothingIsLeftOut) {
     // VSM keeps two channels when nothing filters its map.
     s.shadow.gaussianRadius = 0;
     s.shadow.technique = Technique::Vsm;
-    EXPECT_EQ(planPasses(s).texture(0, "raw")->format, "RG32F");
+    EXPECT_EQ(planPasses(s).texture(0, TextureRole::Raw)->format, "RG32F");
     // A SAT box of one texel keeps its table: the bilinear read that would stand in for it
     // is weighed with 8 bits on llvmpipe, not the same image.
     s.shadow.technique = Technique::Msm4;
@@ -222,7 +222,7 @@ TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
         const std::string what = std::string(toString(e.technique)) + "/" + toString(e.filter);
         PassPlan plan = planPasses(s, {.resolveSat = true});  // every image, the resolve's too
         EXPECT_EQ(kinds(plan), e.passes) << what;
-        const PlannedTexture* raw = plan.texture(0, "raw");
+        const PlannedTexture* raw = plan.texture(0, TextureRole::Raw);
         ASSERT_NE(raw, nullptr) << what;
         EXPECT_EQ(raw->format, e.rawFormat) << what;
         EXPECT_EQ(raw->layers, e.rawLayers) << what;
@@ -235,9 +235,9 @@ TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
 TEST(PassPlan, Msm16bitHalvesTheMapOfMsm4) {
     Scene s = sceneWith(FilterKind::Gaussian, 1, true);
     s.shadow.technique = Technique::Msm4;
-    const size_t full = planPasses(s).texture(0, "raw")->bytes;
+    const size_t full = planPasses(s).texture(0, TextureRole::Raw)->bytes;
     s.shadow.technique = Technique::Msm4_16bit;
-    EXPECT_EQ(planPasses(s).texture(0, "raw")->bytes * 2, full);
+    EXPECT_EQ(planPasses(s).texture(0, TextureRole::Raw)->bytes * 2, full);
 }
 
 TEST(PassPlan, CsmTermsDecideTheLayers) {
@@ -246,7 +246,7 @@ TEST(PassPlan, CsmTermsDecideTheLayers) {
     for (int m : {1, 2, 3, 8}) {
         s.shadow.parameters["terms"] = m;
         PassPlan plan = planPasses(s);
-        EXPECT_EQ(plan.texture(0, "raw")->layers, (m + 1) / 2) << m;
+        EXPECT_EQ(plan.texture(0, TextureRole::Raw)->layers, (m + 1) / 2) << m;
         EXPECT_EQ(plan.momentChannels, 2 * m) << m;
     }
 }

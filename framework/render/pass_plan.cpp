@@ -27,7 +27,23 @@ const char* toString(PassKind kind) {
     return "?";
 }
 
-const PlannedTexture* PassPlan::texture(int light, const std::string& role, int cascade) const {
+const char* toString(TextureRole role) {
+    switch (role) {
+        case TextureRole::Depth: return "depth";
+        case TextureRole::Raw: return "raw";
+        case TextureRole::Second: return "second";
+        case TextureRole::Wide: return "wide";
+        case TextureRole::Scratch: return "scratch";
+        case TextureRole::Filtered: return "filtered";
+        case TextureRole::Sat: return "sat";
+        case TextureRole::Color: return "color";
+        case TextureRole::Shadow: return "shadow";
+        case TextureRole::CameraDepth: return "camera-depth";
+    }
+    return "?";
+}
+
+const PlannedTexture* PassPlan::texture(int light, TextureRole role, int cascade) const {
     for (const auto& t : textures)
         if (t.light == light && t.role == role && t.cascade == cascade) return &t;
     return nullptr;
@@ -49,9 +65,9 @@ int PassPlan::cascadeCount(int light) const {
 
 namespace {
 
-PlannedTexture tex(int light, int camera, std::string role, std::string format, unsigned gl,
+PlannedTexture tex(int light, int camera, TextureRole role, std::string format, unsigned gl,
                    int w, int h, int layers, int bytesPerTexel) {
-    return {light, camera, std::move(role), std::move(format), gl, w, h, layers,
+    return {light, camera, role, std::move(format), gl, w, h, layers,
             size_t(w) * h * layers * bytesPerTexel};
 }
 
@@ -63,8 +79,8 @@ namespace {
 void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
                    const PlanOptions& options) {
     const ShadowEffect& fx = plan.effect;
-    const TechniqueRow& row = techniqueRow(fx.technique);
-    const MapLayout map = mapLayout(fx);
+    const TechniqueRow& row = *plan.row;
+    const MapLayout& map = plan.map;
     const int n = fx.mapSize;
     const bool filterPasses = !row.filterInLighting;
     auto add = [&](PlannedTexture t) {
@@ -75,43 +91,43 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
         p.cascade = c;
         plan.passes.push_back(std::move(p));
     };
-    add(tex(i, -1, "depth", "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
-    add(tex(i, -1, "raw", map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
+    add(tex(i, -1, TextureRole::Depth, "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
+    add(tex(i, -1, TextureRole::Raw, map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
     pass(
-        {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, "raw"});
+        {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, TextureRole::Raw});
     if (row.secondDepth) {
-        add(tex(i, -1, "second", "R32F", GL_R32F, n, n, 1, 4));
+        add(tex(i, -1, TextureRole::Second, "R32F", GL_R32F, n, n, 1, 4));
         pass({PassKind::ShadowSecond, i, -1,
                                "second-depth: peel the first surface, store the midpoint",
-                               "second"});
+                               TextureRole::Second});
     }
     if (!filterPasses || fx.filter == FilterKind::None) return;
     // The filter stages take RGBA32F layers (the stage contract): a 16-bit map is widened first.
-    auto rgba32f = [&](const char* role) {
+    auto rgba32f = [&](TextureRole role) {
         add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, n, n, map.layers, 16));
     };
     if (map.glFormat != GL_RGBA32F) {
-        rgba32f("wide");
+        rgba32f(TextureRole::Wide);
         pass({PassKind::Widen, i, -1, map.formatName + " map into RGBA32F for the filter stages",
-              "wide"});
+              TextureRole::Wide});
     }
     if (fx.filter == FilterKind::Gaussian) {
         const std::string why = "gaussian filter, radius " + std::to_string(fx.gaussianRadius);
-        rgba32f("scratch");
-        rgba32f("filtered");
-        pass({PassKind::GaussianX, i, -1, why, "scratch"});
-        pass({PassKind::GaussianY, i, -1, why, "filtered"});
+        rgba32f(TextureRole::Scratch);
+        rgba32f(TextureRole::Filtered);
+        pass({PassKind::GaussianX, i, -1, why, TextureRole::Scratch});
+        pass({PassKind::GaussianY, i, -1, why, TextureRole::Filtered});
         return;
     }
     char why[64];
     std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
-    rgba32f("scratch");
-    rgba32f("sat");
-    pass({PassKind::SatRows, i, -1, why, "scratch"});
-    pass({PassKind::SatColumns, i, -1, why, "sat"});
+    rgba32f(TextureRole::Scratch);
+    rgba32f(TextureRole::Sat);
+    pass({PassKind::SatRows, i, -1, why, TextureRole::Scratch});
+    pass({PassKind::SatColumns, i, -1, why, TextureRole::Sat});
     if (options.resolveSat) {
-        rgba32f("filtered");
-        pass({PassKind::SatResolve, i, -1, "filtered map requested as output", "filtered"});
+        rgba32f(TextureRole::Filtered);
+        pass({PassKind::SatResolve, i, -1, "filtered map requested as output", TextureRole::Filtered});
     }
 }
 
@@ -155,8 +171,10 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
         plan.leftOut.push_back(why);
     }
     const ShadowEffect& fx = plan.effect;
-    const TechniqueRow& row = techniqueRow(fx.technique);
-    const MapLayout map = mapLayout(fx);
+    plan.row = &techniqueRow(fx.technique);
+    plan.map = mapLayout(fx);
+    const TechniqueRow& row = *plan.row;
+    const MapLayout& map = plan.map;
     const bool casters = anyCaster(scene);
     std::vector<Bounds> bounds;  // only when a light has cascades (meshes are built for it)
     for (int i = 0; i < int(scene.lights.size()); ++i) {
@@ -202,11 +220,11 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
             if (row.filterInLighting) why += std::string(" (") + toString(fx.filter) + " kernel)";
             if (row.blockerSearch) why += " + blocker search";
         }
-        plan.textures.push_back(tex(-1, c, "color", "RGBA32F", GL_RGBA32F, cam.width, cam.height, 1, 16));
-        plan.textures.push_back(tex(-1, c, "shadow", "R32F", GL_R32F, cam.width, cam.height, 1, 4));
-        plan.textures.push_back(tex(-1, c, "camera-depth", "DEPTH32F", GL_DEPTH_COMPONENT32F,
+        plan.textures.push_back(tex(-1, c, TextureRole::Color, "RGBA32F", GL_RGBA32F, cam.width, cam.height, 1, 16));
+        plan.textures.push_back(tex(-1, c, TextureRole::Shadow, "R32F", GL_R32F, cam.width, cam.height, 1, 4));
+        plan.textures.push_back(tex(-1, c, TextureRole::CameraDepth, "DEPTH32F", GL_DEPTH_COMPONENT32F,
                                     cam.width, cam.height, 1, 4));
-        plan.passes.push_back({PassKind::Lighting, -1, c, why, "color"});
+        plan.passes.push_back({PassKind::Lighting, -1, c, why, TextureRole::Color});
     }
     return plan;
 }
@@ -228,7 +246,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
         out += "\n";
     }
     for (const PlannedCascade& c : plan.cascades) {
-        const PlannedTexture* raw = plan.texture(c.light, "raw", c.cascade);
+        const PlannedTexture* raw = plan.texture(c.light, TextureRole::Raw, c.cascade);
         char buf[192];
         std::snprintf(buf, sizeof buf,
                       "  light %d cascade %d: camera depth %.3g to %.3g, map %d² %s, %.2f MiB\n",

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "scene.h"
+#include "technique.h"
 
 #include <cstddef>
 #include <string>
@@ -27,14 +28,19 @@ enum class PassKind {
 
 const char* toString(PassKind);
 
-// A texture the plan allocates. Roles per light: "depth" (the shadow pass's depth buffer),
-// "raw" (the technique's map), "second" (second-depth midpoint), "wide" (a 16-bit map in
-// RGBA32F for the filters), "scratch" (the filters' first pass), "filtered" (Gaussian, or the
-// SAT resolve), "sat" (the summed-area table); per camera: "color", "shadow", "camera-depth".
+// What a texture is for. Per light: its shadow pass's depth buffer, the technique's map (Raw),
+// the second-depth midpoint, a 16-bit map widened to RGBA32F for the filters, the filters'
+// first pass, the filtered map (Gaussian, or the SAT resolve), the summed-area table; per
+// camera: the colour, G and depth targets.
+enum class TextureRole { Depth, Raw, Second, Wide, Scratch, Filtered, Sat, Color, Shadow, CameraDepth };
+// "depth", "raw", "second", "wide", "scratch", "filtered", "sat", "color", "shadow",
+// "camera-depth" (--explain, render.json).
+const char* toString(TextureRole);
+
 struct PlannedTexture {
     int light = -1;
     int camera = -1;
-    std::string role;
+    TextureRole role = TextureRole::Raw;
     std::string format;      // "RGBA32F", "R32F", "RGBA16", "DEPTH32F", ...
     unsigned glFormat = 0;
     int width = 0, height = 0;
@@ -48,7 +54,7 @@ struct PlannedPass {
     int light = -1;   // index into Scene::lights (shadow and filter passes)
     int camera = -1;  // index into Scene::cameras (lighting passes)
     std::string why;  // which declared effect calls for it
-    std::string writes;  // the role it writes ("raw", "filtered", ...)
+    TextureRole writes = TextureRole::Raw;
     int cascade = 0;     // shadow and filter passes: which of the light's cascades
 };
 
@@ -76,6 +82,8 @@ struct PassPlan {
     // nothing (a Gaussian of radius 0, a SAT box of one texel). Everything after planning
     // reads this, not the scene's.
     ShadowEffect effect;
+    const TechniqueRow* row = nullptr;  // the effect's row of the technique table
+    MapLayout map;                      // the effect's shadow map (mapLayout)
     std::vector<PlannedPass> passes;
     std::vector<int> shadowLights;  // lights that get a shadow map, in order
     int momentChannels = 0;         // channels the map stores in all (MSM: 4; CSM: 2M; none: 0)
@@ -85,7 +93,7 @@ struct PassPlan {
     std::vector<std::string> leftOut;      // what the scene declares but cannot see, and why
     bool resolvedSat = false;              // planned with PlanOptions::resolveSat
 
-    const PlannedTexture* texture(int light, const std::string& role, int cascade = 0) const;
+    const PlannedTexture* texture(int light, TextureRole role, int cascade = 0) const;
     // Of one light's textures (one cascade's, or all with -1); light -1: all shadow textures.
     size_t bytes(int light = -1, int cascade = -1) const;
     int cascadeCount(int light) const;     // 1 for a light without cascades

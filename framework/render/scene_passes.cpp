@@ -59,9 +59,9 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
                    const ShadowEffect& fx, const SceneGeometry& geometry) {
     const int n = fx.mapSize;
     std::vector<const Texture*> colors;
-    if (second) colors.push_back(&m.one("second"));
-    else for (const Texture& t : m.tex.at("raw")) colors.push_back(&t);
-    FramebufferHandle fb = makeFramebuffer(colors, m.one("depth"));
+    if (second) colors.push_back(&m.one(TextureRole::Second));
+    else for (const Texture& t : m.tex.at(TextureRole::Raw)) colors.push_back(&t);
+    FramebufferHandle fb = makeFramebuffer(colors, m.one(TextureRole::Depth));
     const float farDepth = 1.0f;
     for (size_t k = 0; k < colors.size(); ++k) {
         // Relative depth 1 everywhere: nothing in front (msm4: moments (1, 1, 1, 1)).
@@ -81,8 +81,8 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
         const auto eps = float(techniqueParameter(fx, "peelEpsilon"));
         p.set("uPeelEpsilon", eps);
         p.set("uFirstDepth", 0);
-        gl::BindTextureUnit(0, m.one("raw").id());
-        m.forLighting.push_back(&m.one("second"));
+        gl::BindTextureUnit(0, m.one(TextureRole::Raw).id());
+        m.forLighting.push_back(&m.one(TextureRole::Second));
     }
     geometry.draw(p, true, false);
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
