@@ -107,7 +107,7 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
                            bool standIns) {
     Scene scene = loadScene(gs.path.string());
     Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
-    RenderResult result = renderer.render(scene, planPasses(scene));
+    RenderResult result = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
     const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
         auto it = result.images.find(name);
         return it == result.images.end() ? nullptr : &it->second;

@@ -57,8 +57,8 @@ uniform float uMomentBias;  // α, handed to msm.glsl
 #include "techniques/msm_soft.glsl"
 #endif
 
-#define SL_MAX_LIGHTS 4
-#define SL_MAX_CASCADES 4  // per light; a light's maps are "slots" SL_MAX_CASCADES·i + c
+// SL_MAX_LIGHTS, SL_MAX_CASCADES (per light) come as defines (framework/scene/scene_limits.h); a
+// light's maps are "slots" SL_MAX_CASCADES·i + c.
 // How many slots have maps (the renderer's lightingProgram sets it from the plan). With one,
 // that slot's maps start at unit 0, a constant: llvmpipe then reads one known sampler instead
 // of switching over the sampler array at every texelFetch (about a third of the SAT lookup's

@@ -114,7 +114,7 @@ const Scene& scene(const std::string& name) {
 RenderResult render(const Scene& s, ShaderLibrary library) {
     test::sharedContext();
     Renderer renderer(std::move(library));
-    return renderer.render(s, planPasses(s));
+    return renderer.render(s, planPasses(s, {.resolveSat = true}));  // the graded images
 }
 
 // The pure reference render of each scene, once per test process.

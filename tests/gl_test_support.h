@@ -65,10 +65,11 @@ inline ShaderLibrary library(const std::string& solution) {
     return ShaderLibrary::forSolution(resolveSolution(solution), root());
 }
 
+// Every image the scene can make (a SAT scene's filtered map too).
 inline RenderResult renderScene(const Scene& scene, const std::string& solution = "reference") {
     sharedContext();
     Renderer renderer(library(solution));
-    return renderer.render(scene, planPasses(scene));
+    return renderer.render(scene, planPasses(scene, {.resolveSat = true}));
 }
 
 // A fresh, empty folder for one test's files.

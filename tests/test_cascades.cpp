@@ -110,7 +110,7 @@ TEST(CascadePlan, NCascadesPlanNSetsOfMapsWithContiguousRanges) {
         s.lights[0].cascades = n;
         const PassPlan plan = planPasses(s);
         int raws = 0, shadowPasses = 0, blurs = 0;
-        for (const PlannedTexture& t : plan.textures) raws += t.role == "raw";
+        for (const PlannedTexture& t : plan.textures) raws += t.role == TextureRole::Raw;
         for (const PlannedPass& p : plan.passes) {
             shadowPasses += p.kind == PassKind::Shadow;
             blurs += p.kind == PassKind::GaussianX;
@@ -120,8 +120,8 @@ TEST(CascadePlan, NCascadesPlanNSetsOfMapsWithContiguousRanges) {
         EXPECT_EQ(blurs, n);
         EXPECT_EQ(plan.bytes(), size_t(n) * one.bytes());
         for (int c = 0; c < n; ++c) {
-            ASSERT_NE(plan.texture(0, "raw", c), nullptr);
-            EXPECT_EQ(plan.texture(0, "raw", c)->width, 512);
+            ASSERT_NE(plan.texture(0, TextureRole::Raw, c), nullptr);
+            EXPECT_EQ(plan.texture(0, TextureRole::Raw, c)->width, 512);
             EXPECT_EQ(plan.bytes(0, c), one.bytes());
         }
         ASSERT_EQ(plan.cascades.size(), size_t(n));

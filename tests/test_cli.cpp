@@ -8,8 +8,18 @@
 namespace sl {
 
 TEST(Cli, RenderWritesImagesPreviewsAndSidecar) {
+    // A SAT scene's filtered map is a pass of its own: made only when asked for.
+    fs::path plain = test::tempDir("cli_render_plain");
+    auto p = test::runCommand(test::shadowlabBinary() + " render --explain --scene " +
+                              test::scenePath("contact").string() + " --out " + plain.string());
+    ASSERT_EQ(p.exitCode, 0) << p.output;
+    EXPECT_TRUE(fs::exists(plain / "final.png"));
+    EXPECT_FALSE(fs::exists(plain / "moments_filtered.exr"));
+    EXPECT_EQ(p.output.find("sat-resolve "), std::string::npos) << p.output;
+    EXPECT_NE(p.output.find("left out: sat-resolve"), std::string::npos) << p.output;
+
     fs::path out = test::tempDir("cli_render");
-    auto r = test::runCommand(test::shadowlabBinary() + " render --explain --scene " +
+    auto r = test::runCommand(test::shadowlabBinary() + " render --explain --filtered-moments --scene " +
                               test::scenePath("contact").string() + " --out " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f : {"final.exr", "final.png", "shadow.exr", "shadow.png", "moments_raw.exr",
@@ -17,6 +27,12 @@ TEST(Cli, RenderWritesImagesPreviewsAndSidecar) {
                           "sat.exr", "render.json"})
         EXPECT_TRUE(fs::exists(out / f)) << f;
     EXPECT_NE(r.output.find("sat-rows"), std::string::npos) << r.output;  // --explain
+    // The resolve is an output only: the frame is the same bytes either way.
+    auto hashes = [](const fs::path& dir) {
+        return nlohmann::json::parse(std::ifstream(dir / "render.json"))["sha256"];
+    };
+    for (const char* f : {"final.exr", "shadow.exr", "moments_raw.exr"})
+        EXPECT_EQ(hashes(plain)[f], hashes(out)[f]) << f;
     EXPECT_NE(r.output.find(" ms"), std::string::npos) << r.output;
     auto sidecar = nlohmann::json::parse(std::ifstream(out / "render.json"));
     EXPECT_EQ(sidecar["solution"], "reference");

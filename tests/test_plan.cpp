@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace sl {
 namespace {
 
@@ -20,6 +22,7 @@ Scene sceneWith(FilterKind filter, int lights, bool shadows, int cameras = 1) {
         l.castsShadows = shadows;
         s.lights.push_back(l);
     }
+    s.objects.emplace_back();  // a caster: without one no light gets a map
     s.shadow.filter = filter;
     return s;
 }
@@ -51,14 +54,71 @@ TEST(PassPlan, GaussianIsTwoSeparablePasses) {
     EXPECT_EQ(plan.momentChannels, 4);  // MSM stores (z, z², z³, z⁴)
 }
 
-TEST(PassPlan, SatIsTwoScansAndAnOptionalResolve) {
+TEST(PassPlan, SatIsTwoScansAndAResolveOnlyWhenAsked) {
     Scene s = sceneWith(FilterKind::Sat, 1, true);
-    EXPECT_EQ(kinds(planPasses(s)),
+    const PassPlan plain = planPasses(s);
+    EXPECT_EQ(kinds(plain), (std::vector<PassKind>{PassKind::Shadow, PassKind::SatRows,
+                                                   PassKind::SatColumns, PassKind::Lighting}));
+    EXPECT_EQ(plain.texture(0, TextureRole::Filtered), nullptr);
+    const std::string text = explainPlan(s, plain);
+    EXPECT_NE(text.find("left out: sat-resolve"), std::string::npos) << text;
+    EXPECT_EQ(kinds(planPasses(s, {.resolveSat = true})),
               (std::vector<PassKind>{PassKind::Shadow, PassKind::SatRows, PassKind::SatColumns,
                                      PassKind::SatResolve, PassKind::Lighting}));
-    EXPECT_EQ(kinds(planPasses(s, {.resolveSat = false})),
-              (std::vector<PassKind>{PassKind::Shadow, PassKind::SatRows, PassKind::SatColumns,
-                                     PassKind::Lighting}));
+}
+
+// A light over a scene where nothing casts shadows would render an empty map and filter it.
+TEST(PassPlan, NoCasterMeansNoShadowMap) {
+    Scene s = sceneWith(FilterKind::Gaussian, 2, true);
+    Object ground;
+    ground.castsShadows = false;
+    s.objects = {ground, ground};
+    PassPlan plan = planPasses(s);
+    EXPECT_EQ(kinds(plan), std::vector<PassKind>{PassKind::Lighting});
+    EXPECT_TRUE(plan.shadowLights.empty());
+    EXPECT_EQ(plan.bytes(), 0u);
+    const std::string text = explainPlan(s, plan);
+    EXPECT_NE(text.find("left out: light 0: no object casts shadows"), std::string::npos) << text;
+    EXPECT_NE(text.find("left out: light 1: no object casts shadows"), std::string::npos) << text;
+    s.objects[1].castsShadows = true;  // one caster is enough
+    EXPECT_EQ(planPasses(s).shadowLights, (std::vector<int>{0, 1}));
+}
+
+// A filter that changes no texel plans no pass: a Gaussian of radius 0.
+TEST(PassPlan, AFilterThatChangesNothingIsLeftOut) {
+    Scene s = sceneWith(FilterKind::Gaussian, 1, true);
+    s.shadow.gaussianRadius = 0;
+    PassPlan plan = planPasses(s);
+    EXPECT_EQ(kinds(plan), (std::vector<PassKind>{PassKind::Shadow, PassKind::Lighting}));
+    EXPECT_EQ(plan.effect.filter, FilterKind::None);
+    EXPECT_EQ(std::count(plan.defines.begin(), plan.defines.end(), "SL_FILTER_GAUSSIAN"), 0);
+    EXPECT_NE(explainPlan(s, plan).find("left out: gaussian filter of radius 0"),
+              std::string::npos);
+    s.shadow.gaussianRadius = 1;
+    EXPECT_EQ(planPasses(s).passes.size(), 4u);
+
+    // VSM keeps two channels when nothing filters its map.
+    s.shadow.gaussianRadius = 0;
+    s.shadow.technique = Technique::Vsm;
+    EXPECT_EQ(planPasses(s).texture(0, TextureRole::Raw)->format, "RG32F");
+    // A SAT box of one texel keeps its table: the bilinear read that would stand in for it
+    // is weighed with 8 bits on llvmpipe, not the same image.
+    s.shadow.technique = Technique::Msm4;
+    s.shadow.filter = FilterKind::Sat;
+    s.shadow.satKernelTexels = 1.0f;
+    EXPECT_EQ(planPasses(s).passes.size(), 4u);
+}
+
+TEST(PassPlan, KernelReachesTheImageUnlessThePixelPicksIt) {
+    ShadowEffect fx;
+    fx.filter = FilterKind::Sat;
+    EXPECT_TRUE(kernelReachesImage(fx));  // msm4
+    fx.technique = Technique::MsmSoft;
+    EXPECT_FALSE(kernelReachesImage(fx));
+    fx.technique = Technique::Pcf;  // its PCF kernel
+    EXPECT_TRUE(kernelReachesImage(fx));
+    fx.filter = FilterKind::None;
+    EXPECT_FALSE(kernelReachesImage(fx));
 }
 
 TEST(PassPlan, StaticLightIsRenderedOnceForSeveralCameras) {
@@ -116,7 +176,7 @@ const std::vector<Expected> kLadder = {
     {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table, and the resolve's
-    // filtered map (output only; PlanOptions::resolveSat). A map a filter stage reads is
+    // filtered map (output only, asked for here: PlanOptions::resolveSat). A map a filter stage reads is
     // RGBA32F (the stage contract's format), so VSM's two channels fill half of each texel.
     {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 3 * 16, 2},
@@ -160,9 +220,9 @@ TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
         s.shadow.technique = e.technique;
         s.shadow.mapSize = 256;
         const std::string what = std::string(toString(e.technique)) + "/" + toString(e.filter);
-        PassPlan plan = planPasses(s);
+        PassPlan plan = planPasses(s, {.resolveSat = true});  // every image, the resolve's too
         EXPECT_EQ(kinds(plan), e.passes) << what;
-        const PlannedTexture* raw = plan.texture(0, "raw");
+        const PlannedTexture* raw = plan.texture(0, TextureRole::Raw);
         ASSERT_NE(raw, nullptr) << what;
         EXPECT_EQ(raw->format, e.rawFormat) << what;
         EXPECT_EQ(raw->layers, e.rawLayers) << what;
@@ -175,9 +235,9 @@ TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
 TEST(PassPlan, Msm16bitHalvesTheMapOfMsm4) {
     Scene s = sceneWith(FilterKind::Gaussian, 1, true);
     s.shadow.technique = Technique::Msm4;
-    const size_t full = planPasses(s).texture(0, "raw")->bytes;
+    const size_t full = planPasses(s).texture(0, TextureRole::Raw)->bytes;
     s.shadow.technique = Technique::Msm4_16bit;
-    EXPECT_EQ(planPasses(s).texture(0, "raw")->bytes * 2, full);
+    EXPECT_EQ(planPasses(s).texture(0, TextureRole::Raw)->bytes * 2, full);
 }
 
 TEST(PassPlan, CsmTermsDecideTheLayers) {
@@ -186,7 +246,7 @@ TEST(PassPlan, CsmTermsDecideTheLayers) {
     for (int m : {1, 2, 3, 8}) {
         s.shadow.parameters["terms"] = m;
         PassPlan plan = planPasses(s);
-        EXPECT_EQ(plan.texture(0, "raw")->layers, (m + 1) / 2) << m;
+        EXPECT_EQ(plan.texture(0, TextureRole::Raw)->layers, (m + 1) / 2) << m;
         EXPECT_EQ(plan.momentChannels, 2 * m) << m;
     }
 }

@@ -116,7 +116,7 @@ TEST(SatPrecision, PublicSatScenesMeetTheGraderTolerance) {
         for (int l = 0; l < 2; ++l) {
             test::sharedContext();
             Renderer renderer(l == 0 ? naiveSatLibrary() : test::library("reference"));
-            RenderResult r = renderer.render(scene, planPasses(scene));
+            RenderResult r = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
             const Image& raw = r.images.at("moments_raw");
             const Image& got = r.images.at("moments_filtered");
             const auto sat = oracle::summedAreaTable(raw.pixels, raw.width, raw.height);
@@ -151,7 +151,7 @@ TEST(SatPrecision, ShadowIntensityFromSatAveragesMatchesExactAverages) {
         for (int l = 0; l < 2; ++l) {
             test::sharedContext();
             Renderer renderer(l == 0 ? naiveSatLibrary() : test::library("reference"));
-            RenderResult r = renderer.render(scene, planPasses(scene));
+            RenderResult r = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
             const Image& raw = r.images.at("moments_raw");
             const Image& got = r.images.at("moments_filtered");
             const auto sat = oracle::summedAreaTable(raw.pixels, raw.width, raw.height);

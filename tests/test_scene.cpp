@@ -239,6 +239,26 @@ TEST(SceneErrors, NameFileJsonPathExpectedAndFound) {
          {"/objects/1/shape", "\"box\"", "found \"cube\""}},
         {"no objects", [](json& j) { j["objects"] = json::array(); },
          {"/objects", "non-empty array", "found []"}},
+        // The lighting pass's limits (framework/scene/scene_limits.h), refused here with the limit.
+        {"five lights",
+         [](json& j) { for (int i = 0; i < 4; ++i) j["lights"].push_back(j["lights"][0]); },
+         {"/lights", "at most 4 lights", "found 5"}},
+        {"five cascades",
+         [](json& j) {
+             j["lights"][0] = {{"type", "directional"}, {"position", {0, 6, 0}},
+                               {"target", {0, 0, 0}}, {"cascades", 5}};
+         },
+         {"/lights/0/cascades", "[1, 4]", "found 5"}},
+        // csm's 8 terms take 4 maps per light and cascade: 4 + 4 + 4 + 2 × 4 = 20 > 16.
+        {"seventeen maps and more",
+         [](json& j) {
+             j["shadow"]["technique"] = "csm";
+             j["lights"][0] = {{"type", "directional"}, {"position", {0, 6, 0}},
+                               {"target", {0, 0, 0}}, {"cascades", 2}};
+             for (int i = 0; i < 3; ++i) j["lights"].push_back(j["lights"][0]);
+             for (int i = 1; i < 4; ++i) j["lights"][i].erase("cascades");
+         },
+         {"/lights", "at most 16 shadow maps", "\"csm\" takes 4", "found 20"}},
     };
     for (const BadScene& c : cases) {
         SCOPED_TRACE(c.what);

@@ -48,12 +48,12 @@ double boxMean(const Image& raw, int x, int y, int c, double kernel) {
 
 TEST(TechniqueSatResolve, PlanAddsTheResolveOnlyWhenAsked) {
     const Scene s = satScene(Technique::Vsm, 7.0f);
-    const PassPlan with = planPasses(s);
-    ASSERT_NE(with.texture(0, "filtered"), nullptr);
-    EXPECT_EQ(with.texture(0, "filtered")->format, "RGBA32F");  // the filter stages' format
+    const PassPlan with = planPasses(s, {.resolveSat = true});
+    ASSERT_NE(with.texture(0, TextureRole::Filtered), nullptr);
+    EXPECT_EQ(with.texture(0, TextureRole::Filtered)->format, "RGBA32F");  // the filter stages' format
     EXPECT_EQ(with.passes[3].kind, PassKind::SatResolve);
-    const PassPlan without = planPasses(s, {.resolveSat = false});
-    EXPECT_EQ(without.texture(0, "filtered"), nullptr);
+    const PassPlan without = planPasses(s);
+    EXPECT_EQ(without.texture(0, TextureRole::Filtered), nullptr);
     for (const PlannedPass& p : without.passes) EXPECT_NE(p.kind, PassKind::SatResolve);
 }
 
@@ -96,9 +96,8 @@ TEST(TechniqueSatResolve, ResolveChangesNoLighting) {
     const Scene s = satScene(Technique::Vsm, 7.0f);
     test::sharedContext();
     Renderer renderer(test::library("reference"));
-    const Image with = renderer.render(s, planPasses(s)).images.at("shadow");
-    const Image without =
-        renderer.render(s, planPasses(s, {.resolveSat = false})).images.at("shadow");
+    const Image with = renderer.render(s, planPasses(s, {.resolveSat = true})).images.at("shadow");
+    const Image without = renderer.render(s, planPasses(s)).images.at("shadow");
     EXPECT_EQ(with.pixels, without.pixels);
 }
 

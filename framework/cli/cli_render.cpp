@@ -35,7 +35,7 @@ std::string specFolder(std::string spec) {
 
 int runRender(const std::string& scenePath, const std::string& solution,
               const std::string& outDir, const std::string& backend, bool explain,
-              const std::string& techniques) {
+              const std::string& techniques, bool filteredMoments) {
     const Scene loaded = loadScene(scenePath);
     fs::path solutionDir = resolveSolution(solution);
     auto context = createContext(parseBackendKind(backend));
@@ -71,7 +71,7 @@ int runRender(const std::string& scenePath, const std::string& solution,
             overrideTechnique(scene.shadow, technique, parameters);
             if (specs.size() > 1) out /= specFolder(spec);
         }
-        PassPlan plan = planPasses(scene);
+        PassPlan plan = planPasses(scene, {.resolveSat = filteredMoments});
         RenderResult result = renderer.render(scene, plan);
         writeRenderOutputs(scene, plan, result, {solution, context->info()}, out);
         if (explain) std::cout << explainPlan(scene, plan, &result.passMillis);
@@ -94,7 +94,9 @@ int runRender(const std::string& scenePath, const std::string& solution,
             if (failures.empty())
                 std::cout << "probes: all " << scene.probes.size() << " hold\n";
         }
-        std::cout << "wrote " << out.string() << "/{final,shadow,moments_raw,moments_filtered}.{exr,png} "
+        std::string names;
+        for (const auto& [name, image] : result.images) names += (names.empty() ? "" : ",") + name;
+        std::cout << "wrote " << out.string() << "/{" << names << "}.exr, their .png previews "
                   << "and render.json (" << toString(scene.shadow.technique) << ", "
                   << context->info().backend << ", " << context->info().renderer << ")\n";
     }
@@ -107,7 +109,7 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
     auto* render = app.add_subcommand("render", "render a scene through a solution");
     struct RenderArgs {
         std::string scene, solution = defaultSolution(), out;
-        bool explain = false;
+        bool explain = false, filteredMoments = false;
         std::string technique;
     };
     auto args = std::make_shared<RenderArgs>();
@@ -116,12 +118,15 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
                        "reference, student, or a folder of stage files");
     render->add_option("--out", args->out, "output folder (default: out/<scene name>)");
     render->add_flag("--explain", args->explain, "print the pass plan and the time of each pass");
+    render->add_flag("--filtered-moments", args->filteredMoments,
+                     "also write moments_filtered for a SAT filter (the solution's box average at "
+                     "every texel: a pass of its own that no frame needs)");
     render->add_option("--technique", args->technique,
                        "override the scene's technique: T[,T2,...] or all; T may carry parameters, "
                        "T:name=value[:name=value] (docs/techniques.md)");
     render->callback([args, &ctx] {
         ctx.exitCode = runRender(args->scene, args->solution, args->out, ctx.backend, args->explain,
-                                 args->technique);
+                                 args->technique, args->filteredMoments);
     });
 
     addBenchCommand(app, ctx);  // cli_bench.cpp

@@ -105,7 +105,8 @@ FilterKind chooseFilter(Renderer& renderer, const Scene& first, const std::strin
         tiny.cameras.resize(1);
         scaleScene(tiny, 32);
         useFilter(tiny.shadow, f);
-        const RenderResult r = renderer.render(tiny, planPasses(tiny));
+        // With the filtered map: a stub satBoxAverage shows there (the lit image cannot say).
+        const RenderResult r = renderer.render(tiny, planPasses(tiny, {.resolveSat = true}));
         for (const auto& n : r.stubNotes)
             if (n.find("moments.glsl") != std::string::npos) {
                 why = "the ladder's own; with moments.glsl a stub no filter can be checked";
@@ -220,7 +221,9 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
         scene.cameras.resize(1);  // the main camera's image is the one shown
         scaleScene(scene, size);
         useFilter(scene.shadow, filter);
-        const RenderResult r = renderer.render(scene, planPasses(scene));
+        // Only the step whose moment maps are shown needs the filtered map.
+        const RenderResult r =
+            renderer.render(scene, planPasses(scene, {.resolveSat = i == momentStep}));
         for (const auto& n : r.stubNotes)
             if (std::find(allNotes.begin(), allNotes.end(), n) == allNotes.end()) allNotes.push_back(n);
         const std::string png = "softness_" + std::to_string(i + 1) + ".png";

@@ -119,13 +119,8 @@ BenchRow benchSatLighting(Renderer& r, const std::string& scenePath, int repeats
                                  "needs a scene with a \"sat\" filter");
     Scene bilinear = sat;
     bilinear.shadow.filter = FilterKind::Gaussian;
-    const PassPlan fullSatPlan = planPasses(sat);
-    PassPlan satPlan = fullSatPlan;
-    satPlan.passes.erase(std::remove_if(satPlan.passes.begin(), satPlan.passes.end(),
-                                        [](const PlannedPass& p) {
-                                            return p.kind == PassKind::SatResolve;
-                                        }),
-                         satPlan.passes.end());
+    const PassPlan fullSatPlan = planPasses(sat, {.resolveSat = true});
+    const PassPlan satPlan = planPasses(sat);
     const PassPlan bilinearPlan = planPasses(bilinear);
 
     // Warm-up (compiles), and the stub check on the full plan (sat-resolve calls the lookup).

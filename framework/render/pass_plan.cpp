@@ -27,7 +27,23 @@ const char* toString(PassKind kind) {
     return "?";
 }
 
-const PlannedTexture* PassPlan::texture(int light, const std::string& role, int cascade) const {
+const char* toString(TextureRole role) {
+    switch (role) {
+        case TextureRole::Depth: return "depth";
+        case TextureRole::Raw: return "raw";
+        case TextureRole::Second: return "second";
+        case TextureRole::Wide: return "wide";
+        case TextureRole::Scratch: return "scratch";
+        case TextureRole::Filtered: return "filtered";
+        case TextureRole::Sat: return "sat";
+        case TextureRole::Color: return "color";
+        case TextureRole::Shadow: return "shadow";
+        case TextureRole::CameraDepth: return "camera-depth";
+    }
+    return "?";
+}
+
+const PlannedTexture* PassPlan::texture(int light, TextureRole role, int cascade) const {
     for (const auto& t : textures)
         if (t.light == light && t.role == role && t.cascade == cascade) return &t;
     return nullptr;
@@ -49,9 +65,9 @@ int PassPlan::cascadeCount(int light) const {
 
 namespace {
 
-PlannedTexture tex(int light, int camera, std::string role, std::string format, unsigned gl,
+PlannedTexture tex(int light, int camera, TextureRole role, std::string format, unsigned gl,
                    int w, int h, int layers, int bytesPerTexel) {
-    return {light, camera, std::move(role), std::move(format), gl, w, h, layers,
+    return {light, camera, role, std::move(format), gl, w, h, layers,
             size_t(w) * h * layers * bytesPerTexel};
 }
 
@@ -60,11 +76,11 @@ PlannedTexture tex(int light, int camera, std::string role, std::string format, 
 namespace {
 
 // The maps and passes of light i (its cascade c: every cascade has a full set of its own).
-void planLightMaps(PassPlan& plan, const Scene& scene, int i, int c, const std::string& light,
+void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
                    const PlanOptions& options) {
-    const ShadowEffect& fx = scene.shadow;
-    const TechniqueRow& row = techniqueRow(fx.technique);
-    const MapLayout map = mapLayout(fx);
+    const ShadowEffect& fx = plan.effect;
+    const TechniqueRow& row = *plan.row;
+    const MapLayout& map = plan.map;
     const int n = fx.mapSize;
     const bool filterPasses = !row.filterInLighting;
     auto add = [&](PlannedTexture t) {
@@ -75,43 +91,43 @@ void planLightMaps(PassPlan& plan, const Scene& scene, int i, int c, const std::
         p.cascade = c;
         plan.passes.push_back(std::move(p));
     };
-    add(tex(i, -1, "depth", "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
-    add(tex(i, -1, "raw", map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
+    add(tex(i, -1, TextureRole::Depth, "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
+    add(tex(i, -1, TextureRole::Raw, map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
     pass(
-        {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, "raw"});
+        {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, TextureRole::Raw});
     if (row.secondDepth) {
-        add(tex(i, -1, "second", "R32F", GL_R32F, n, n, 1, 4));
+        add(tex(i, -1, TextureRole::Second, "R32F", GL_R32F, n, n, 1, 4));
         pass({PassKind::ShadowSecond, i, -1,
                                "second-depth: peel the first surface, store the midpoint",
-                               "second"});
+                               TextureRole::Second});
     }
     if (!filterPasses || fx.filter == FilterKind::None) return;
     // The filter stages take RGBA32F layers (the stage contract): a 16-bit map is widened first.
-    auto rgba32f = [&](const char* role) {
+    auto rgba32f = [&](TextureRole role) {
         add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, n, n, map.layers, 16));
     };
     if (map.glFormat != GL_RGBA32F) {
-        rgba32f("wide");
+        rgba32f(TextureRole::Wide);
         pass({PassKind::Widen, i, -1, map.formatName + " map into RGBA32F for the filter stages",
-              "wide"});
+              TextureRole::Wide});
     }
     if (fx.filter == FilterKind::Gaussian) {
         const std::string why = "gaussian filter, radius " + std::to_string(fx.gaussianRadius);
-        rgba32f("scratch");
-        rgba32f("filtered");
-        pass({PassKind::GaussianX, i, -1, why, "scratch"});
-        pass({PassKind::GaussianY, i, -1, why, "filtered"});
+        rgba32f(TextureRole::Scratch);
+        rgba32f(TextureRole::Filtered);
+        pass({PassKind::GaussianX, i, -1, why, TextureRole::Scratch});
+        pass({PassKind::GaussianY, i, -1, why, TextureRole::Filtered});
         return;
     }
     char why[64];
     std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
-    rgba32f("scratch");
-    rgba32f("sat");
-    pass({PassKind::SatRows, i, -1, why, "scratch"});
-    pass({PassKind::SatColumns, i, -1, why, "sat"});
+    rgba32f(TextureRole::Scratch);
+    rgba32f(TextureRole::Sat);
+    pass({PassKind::SatRows, i, -1, why, TextureRole::Scratch});
+    pass({PassKind::SatColumns, i, -1, why, TextureRole::Sat});
     if (options.resolveSat) {
-        rgba32f("filtered");
-        pass({PassKind::SatResolve, i, -1, "filtered map requested as output", "filtered"});
+        rgba32f(TextureRole::Filtered);
+        pass({PassKind::SatResolve, i, -1, "filtered map requested as output", TextureRole::Filtered});
     }
 }
 
@@ -122,20 +138,57 @@ int cascadeCount(const Scene& scene, int i) {
     return l.type == LightType::Directional && !scene.cameras.empty() ? l.cascades : 1;
 }
 
+// Why the scene's filter changes no image, or "" if it does: a Gaussian of radius 0 is one
+// tap of weight 1, the map itself to the bit. A SAT box of one texel is not left out: it is
+// the bilinear read lighting makes without a filter in exact arithmetic, but llvmpipe weighs
+// a bilinear read with 8 bits, and 4MSM turns that into G up to 0.9 apart at shadow edges
+// (scenes/ladder/softness_1: 5 % of its pixels), so the table stays.
+std::string identityFilter(const ShadowEffect& fx) {
+    if (techniqueRow(fx.technique).filterInLighting) return "";
+    if (fx.filter == FilterKind::Gaussian && fx.gaussianRadius == 0)
+        return "gaussian filter of radius 0 (one tap of weight 1): no filter passes";
+    return "";
+}
+
+bool anyCaster(const Scene& scene) {
+    for (const Object& o : scene.objects)
+        if (o.castsShadows) return true;
+    return false;
+}
+
 }  // namespace
+
+bool kernelReachesImage(const ShadowEffect& fx) {
+    return fx.filter != FilterKind::None && !techniqueRow(fx.technique).blockerSearch;
+}
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
     PassPlan plan;
-    const ShadowEffect& fx = scene.shadow;
-    const TechniqueRow& row = techniqueRow(fx.technique);
-    const MapLayout map = mapLayout(fx);
+    plan.effect = scene.shadow;
+    plan.resolvedSat = options.resolveSat;
+    if (std::string why = identityFilter(scene.shadow); !why.empty()) {
+        plan.effect.filter = FilterKind::None;
+        plan.leftOut.push_back(why);
+    }
+    const ShadowEffect& fx = plan.effect;
+    plan.row = &techniqueRow(fx.technique);
+    plan.map = mapLayout(fx);
+    const TechniqueRow& row = *plan.row;
+    const MapLayout& map = plan.map;
+    const bool casters = anyCaster(scene);
     std::vector<Bounds> bounds;  // only when a light has cascades (meshes are built for it)
     for (int i = 0; i < int(scene.lights.size()); ++i) {
         if (!scene.lights[i].castsShadows) continue;
+        if (!casters) {  // its map would be empty: G = 0 everywhere, as without a map
+            plan.leftOut.push_back("light " + std::to_string(i) +
+                                   ": no object casts shadows (every object has castsShadows "
+                                   "false): no shadow map, no filter");
+            continue;
+        }
         plan.shadowLights.push_back(i);
         const int cascades = cascadeCount(scene, i);
         if (cascades == 1) {
-            planLightMaps(plan, scene, i, 0, "light " + std::to_string(i), options);
+            planLightMaps(plan, i, 0, "light " + std::to_string(i), options);
             continue;
         }
         if (bounds.empty()) bounds = sceneBounds(scene);
@@ -145,10 +198,14 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
             cascadeSplits(range.x, range.y, cascades, l.cascadeSplit, l.cascadeLambda);
         for (int c = 0; c < cascades; ++c) {
             plan.cascades.push_back({i, c, d[c], d[c + 1]});
-            planLightMaps(plan, scene, i, c,
+            planLightMaps(plan, i, c,
                           "light " + std::to_string(i) + " cascade " + std::to_string(c), options);
         }
     }
+    if (fx.filter == FilterKind::Sat && !row.filterInLighting && !plan.shadowLights.empty() &&
+        !options.resolveSat)
+        plan.leftOut.push_back("sat-resolve: the moments_filtered image is not asked for "
+                               "(lighting reads the table; render --filtered-moments makes it)");
     if (!plan.shadowLights.empty()) {
         plan.momentChannels = map.channels * map.layers;
         if (fx.technique == Technique::Csm)
@@ -163,11 +220,11 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
             if (row.filterInLighting) why += std::string(" (") + toString(fx.filter) + " kernel)";
             if (row.blockerSearch) why += " + blocker search";
         }
-        plan.textures.push_back(tex(-1, c, "color", "RGBA32F", GL_RGBA32F, cam.width, cam.height, 1, 16));
-        plan.textures.push_back(tex(-1, c, "shadow", "R32F", GL_R32F, cam.width, cam.height, 1, 4));
-        plan.textures.push_back(tex(-1, c, "camera-depth", "DEPTH32F", GL_DEPTH_COMPONENT32F,
+        plan.textures.push_back(tex(-1, c, TextureRole::Color, "RGBA32F", GL_RGBA32F, cam.width, cam.height, 1, 16));
+        plan.textures.push_back(tex(-1, c, TextureRole::Shadow, "R32F", GL_R32F, cam.width, cam.height, 1, 4));
+        plan.textures.push_back(tex(-1, c, TextureRole::CameraDepth, "DEPTH32F", GL_DEPTH_COMPONENT32F,
                                     cam.width, cam.height, 1, 4));
-        plan.passes.push_back({PassKind::Lighting, -1, c, why, "color"});
+        plan.passes.push_back({PassKind::Lighting, -1, c, why, TextureRole::Color});
     }
     return plan;
 }
@@ -175,10 +232,10 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis) {
     std::string out = "plan for " + scene.name + " (" + std::to_string(plan.passes.size()) +
-                      " passes, technique " + toString(scene.shadow.technique) + ", filter " +
-                      toString(scene.shadow.filter) + ", moments " +
+                      " passes, technique " + toString(plan.effect.technique) + ", filter " +
+                      toString(plan.effect.filter) + ", moments " +
                       std::to_string(plan.momentChannels) + " channels):\n";
-    const auto params = resolvedParameters(scene.shadow);
+    const auto params = resolvedParameters(plan.effect);
     if (!params.empty()) {
         out += "  parameters:";
         for (const auto& [name, value] : params) {
@@ -189,7 +246,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
         out += "\n";
     }
     for (const PlannedCascade& c : plan.cascades) {
-        const PlannedTexture* raw = plan.texture(c.light, "raw", c.cascade);
+        const PlannedTexture* raw = plan.texture(c.light, TextureRole::Raw, c.cascade);
         char buf[192];
         std::snprintf(buf, sizeof buf,
                       "  light %d cascade %d: camera depth %.3g to %.3g, map %d² %s, %.2f MiB\n",
@@ -222,6 +279,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
         }
         out += "\n";
     }
+    for (const std::string& why : plan.leftOut) out += "  left out: " + why + "\n";
     char line[96];
     std::snprintf(line, sizeof line, "  shadow-map memory %.2f MiB\n", plan.bytes() / 1048576.0);
     out += line;

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "scene.h"
+#include "technique.h"
 
 #include <cstddef>
 #include <string>
@@ -27,14 +28,19 @@ enum class PassKind {
 
 const char* toString(PassKind);
 
-// A texture the plan allocates. Roles per light: "depth" (the shadow pass's depth buffer),
-// "raw" (the technique's map), "second" (second-depth midpoint), "wide" (a 16-bit map in
-// RGBA32F for the filters), "scratch" (the filters' first pass), "filtered" (Gaussian, or the
-// SAT resolve), "sat" (the summed-area table); per camera: "color", "shadow", "camera-depth".
+// What a texture is for. Per light: its shadow pass's depth buffer, the technique's map (Raw),
+// the second-depth midpoint, a 16-bit map widened to RGBA32F for the filters, the filters'
+// first pass, the filtered map (Gaussian, or the SAT resolve), the summed-area table; per
+// camera: the colour, G and depth targets.
+enum class TextureRole { Depth, Raw, Second, Wide, Scratch, Filtered, Sat, Color, Shadow, CameraDepth };
+// "depth", "raw", "second", "wide", "scratch", "filtered", "sat", "color", "shadow",
+// "camera-depth" (--explain, render.json).
+const char* toString(TextureRole);
+
 struct PlannedTexture {
     int light = -1;
     int camera = -1;
-    std::string role;
+    TextureRole role = TextureRole::Raw;
     std::string format;      // "RGBA32F", "R32F", "RGBA16", "DEPTH32F", ...
     unsigned glFormat = 0;
     int width = 0, height = 0;
@@ -48,7 +54,7 @@ struct PlannedPass {
     int light = -1;   // index into Scene::lights (shadow and filter passes)
     int camera = -1;  // index into Scene::cameras (lighting passes)
     std::string why;  // which declared effect calls for it
-    std::string writes;  // the role it writes ("raw", "filtered", ...)
+    TextureRole writes = TextureRole::Raw;
     int cascade = 0;     // shadow and filter passes: which of the light's cascades
 };
 
@@ -62,22 +68,32 @@ struct PlannedCascade {
 };
 
 struct PlanOptions {
-    // Produce the filtered map of a SAT scene (the SAT itself is not a moment map): a
-    // SatResolve pass evaluates the solution's satBoxAverage at every texel centre, with the
-    // scene's kernel. The grader and `render` want it; an interactive viewer and the study's
-    // timings do not (lighting reads the table itself).
-    bool resolveSat = true;
+    // Make the filtered map of a SAT scene, the `moments_filtered` image (the table itself is
+    // not a moment map): a SatResolve pass evaluates the solution's satBoxAverage at every
+    // texel centre, with the scene's kernel. No frame needs it (lighting reads the table), and
+    // it costs more than the lighting pass, so only a caller that shows or grades that image
+    // asks for it: the goldens, the grader's reference render, `render --filtered-moments`,
+    // the viewer while it shows that image.
+    bool resolveSat = false;
 };
 
 struct PassPlan {
+    // The effect the passes run: the scene's, with the filter dropped where it would change
+    // nothing (a Gaussian of radius 0, a SAT box of one texel). Everything after planning
+    // reads this, not the scene's.
+    ShadowEffect effect;
+    const TechniqueRow* row = nullptr;  // the effect's row of the technique table
+    MapLayout map;                      // the effect's shadow map (mapLayout)
     std::vector<PlannedPass> passes;
     std::vector<int> shadowLights;  // lights that get a shadow map, in order
     int momentChannels = 0;         // channels the map stores in all (MSM: 4; CSM: 2M; none: 0)
     std::vector<PlannedTexture> textures;  // everything the renderer allocates, nothing else
     std::vector<std::string> defines;      // the permutation of the shadow/lighting programs
     std::vector<PlannedCascade> cascades;  // lights with cascades > 1 only, light by light
+    std::vector<std::string> leftOut;      // what the scene declares but cannot see, and why
+    bool resolvedSat = false;              // planned with PlanOptions::resolveSat
 
-    const PlannedTexture* texture(int light, const std::string& role, int cascade = 0) const;
+    const PlannedTexture* texture(int light, TextureRole role, int cascade = 0) const;
     // Of one light's textures (one cascade's, or all with -1); light -1: all shadow textures.
     size_t bytes(int light = -1, int cascade = -1) const;
     int cascadeCount(int light) const;     // 1 for a light without cascades
@@ -85,8 +101,15 @@ struct PassPlan {
 
 PassPlan planPasses(const Scene& scene, const PlanOptions& options = {});
 
+// Whether the filter's kernel (Gaussian radius and sigma, SAT box) reaches the lit image: not
+// with the filter `none`, nor for a row that chooses its box per pixel (msm-soft). Renders
+// that differ only in a kernel that does not reach the image are the same frame (the study
+// renders one of them).
+bool kernelReachesImage(const ShadowEffect& fx);
+
 // The plan as text: technique and parameters, then one numbered line per pass with the format
-// and memory it writes and why it runs; with `millis` (one per pass) the time of each.
+// and memory it writes and why it runs, then what it left out and why; with `millis` (one per
+// pass) the time of each.
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis = nullptr);
 

@@ -43,12 +43,12 @@ GlProgram& Renderer::passProgram(PassKind kind, int blurRadius,
     throw std::logic_error("no program for this pass");
 }
 
-void Renderer::compilePrograms(const Scene& scene, const PassPlan& plan) {
+void Renderer::compilePrograms(const Scene& /*scene*/, const PassPlan& plan) {
     // The very programs the passes take: the Gaussians' with the scene's radius (a
     // compile-time constant), the lighting's for the plan.
     for (const PlannedPass& pass : plan.passes) {
         if (pass.kind == PassKind::Lighting) lightingProgram(plan);
-        else passProgram(pass.kind, scene.shadow.gaussianRadius, plan.defines);
+        else passProgram(pass.kind, plan.effect.gaussianRadius, plan.defines);
     }
 }
 

@@ -17,12 +17,12 @@ namespace sl::render_detail {
 
 // The textures of one shadowing light, by role (pass_plan.h), each a list of layers.
 struct ShadowMaps {
-    std::map<std::string, std::vector<Texture>> tex;
+    std::map<TextureRole, std::vector<Texture>> tex;
     bool given = false;     // filtered moments came from the caller: no shadow or filter pass runs
     bool givenRaw = false;  // the raw map came from the caller: no shadow pass runs
     LightView view;
     std::vector<const Texture*> forLighting;  // what lighting samples, in unit order
-    Texture& one(const std::string& role) { return tex.at(role).front(); }
+    Texture& one(TextureRole role) { return tex.at(role).front(); }
     float frustumWidth = 0.0f;  // a cascade's: its window's width, world units (0: the light's)
 };
 

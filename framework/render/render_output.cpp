@@ -37,7 +37,7 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
     nlohmann::json maps = nlohmann::json::array();
     for (const PlannedTexture& t : plan.textures)
         if (t.light >= 0) {
-            maps.push_back({{"light", t.light}, {"role", t.role}, {"format", t.format},
+            maps.push_back({{"light", t.light}, {"role", toString(t.role)}, {"format", t.format},
                             {"width", t.width}, {"height", t.height}, {"layers", t.layers},
                             {"bytes", t.bytes}});
             if (!plan.cascades.empty()) maps.back()["cascade"] = t.cascade;

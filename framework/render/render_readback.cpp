@@ -30,30 +30,30 @@ void readBack(const ShaderLibrary& library, const TechniqueRow& row, const Shado
             (li == plan.shadowLights.front() ? "" : "_light" + std::to_string(li)) +
             (id.cascade > 0 ? "_cascade" + std::to_string(id.cascade) : "");
         // Every layer of a role, as "<name><suffix>", "<name><suffix>_layer1", ...
-        auto readLayers = [&](const std::string& role, const std::string& name) {
+        auto readLayers = [&](TextureRole role, const std::string& name) {
             const auto& layers = m.tex.at(role);
             for (size_t k = 1; k < layers.size(); ++k)
                 result.images[name + suffix + "_layer" + std::to_string(k)] = layers[k].read();
             return layers.front().read();
         };
-        Image raw = readLayers("raw", "moments_raw");
+        Image raw = readLayers(TextureRole::Raw, "moments_raw");
         // The stub value in every channel: computeMoments' stub, or a depth map of relativeDepth's.
         if (!m.given && stubOutput(raw, nullptr))
             noteStub(library, result, "moments.glsl", moments ? "computeMoments" : "relativeDepth");
-        if (m.tex.count("second")) result.images["second_depth" + suffix] = m.one("second").read();
-        if (m.tex.count("sat")) {
-            Image sat = readLayers("sat", "sat");
+        if (m.tex.count(TextureRole::Second)) result.images["second_depth" + suffix] = m.one(TextureRole::Second).read();
+        if (m.tex.count(TextureRole::Sat)) {
+            Image sat = readLayers(TextureRole::Sat, "sat");
             if (stubOutput(sat, &raw)) noteStub(library, result, "sat.comp", "prefix-sum pass");
-            if (m.tex.count("filtered")) {
-                Image filtered = readLayers("filtered", "moments_filtered");
+            if (m.tex.count(TextureRole::Filtered)) {
+                Image filtered = readLayers(TextureRole::Filtered, "moments_filtered");
                 // A stub table makes a correct lookup return ~0, never -1 everywhere.
                 if (stubOutput(filtered, &sat) || stubOutput(filtered, nullptr, true))
                     noteStub(library, result, "sat_lookup.glsl", "satBoxAverage");
                 result.images["moments_filtered" + suffix] = std::move(filtered);
             }
             result.images["sat" + suffix] = std::move(sat);
-        } else if (m.tex.count("filtered")) {
-            Image filtered = readLayers("filtered", "moments_filtered");
+        } else if (m.tex.count(TextureRole::Filtered)) {
+            Image filtered = readLayers(TextureRole::Filtered, "moments_filtered");
             if (fx.filter == FilterKind::Gaussian && stubOutput(filtered, &raw))
                 noteStub(library, result, "gaussian_blur.comp", "gaussian blur pass");
             result.images["moments_filtered" + suffix] = std::move(filtered);

@@ -6,6 +6,7 @@
 
 #include "cascades.h"
 #include "cost_clock.h"
+#include "scene_limits.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -15,15 +16,17 @@ using namespace render_detail;
 namespace {
 
 // Sampled maps filter bilinearly (filtering depth or moments is linear); tables do not.
-GLenum samplerFilter(const std::string& role) {
-    return role == "raw" || role == "filtered" || role == "second" ? GL_LINEAR : GL_NEAREST;
+GLenum samplerFilter(TextureRole role) {
+    return role == TextureRole::Raw || role == TextureRole::Filtered || role == TextureRole::Second
+               ? GL_LINEAR
+               : GL_NEAREST;
 }
 
 // Uploads the caller's raw map (role "raw": its layers; "second": the peeled map) into the
 // textures just allocated for planned texture `t`, after checking that it fits them.
 void uploadRawMap(const RawShadowMap& given, const PlannedTexture& t, std::vector<Texture>& layers) {
     std::vector<const Image*> images;
-    if (t.role == "raw")
+    if (t.role == TextureRole::Raw)
         for (const Image& i : given.raw) images.push_back(&i);
     else
         images.push_back(&given.second);
@@ -32,7 +35,7 @@ void uploadRawMap(const RawShadowMap& given, const PlannedTexture& t, std::vecto
     };
     if (images.size() != layers.size())
         throw std::invalid_argument("RenderInputs::rawMaps: light " + std::to_string(t.light) +
-                                    " role " + t.role + ": expected " +
+                                    " role " + toString(t.role) + ": expected " +
                                     std::to_string(layers.size()) + " layer(s), found " +
                                     std::to_string(images.size()));
     for (size_t k = 0; k < layers.size(); ++k) {
@@ -41,7 +44,7 @@ void uploadRawMap(const RawShadowMap& given, const PlannedTexture& t, std::vecto
             layers[k].upload(i);  // checks the size and the format's channel count
         } catch (const std::invalid_argument&) {
             throw std::invalid_argument("RenderInputs::rawMaps: light " + std::to_string(t.light) +
-                                        " role " + t.role + ": expected a " + t.format + " map " +
+                                        " role " + toString(t.role) + ": expected a " + t.format + " map " +
                                         std::to_string(t.width) + "x" + std::to_string(t.height) +
                                         ", found " + describe(i.width, i.height, i.channels));
         }
@@ -55,11 +58,12 @@ Renderer::~Renderer() = default;
 
 RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                               const RenderInputs& inputs) {
-    if (scene.lights.size() > 4) throw std::runtime_error(scene.path + ": at most 4 lights");
+    if (scene.lights.size() > size_t(kMaxLights))  // the loader refuses such a scene first
+        throw std::runtime_error(scene.path + ": at most " + std::to_string(kMaxLights) + " lights");
     RenderResult result;
     SceneGeometry geometry(scene);
-    const ShadowEffect& fx = scene.shadow;
-    const TechniqueRow& row = techniqueRow(fx.technique);
+    const ShadowEffect& fx = plan.effect;  // the plan decided; the renderer executes
+    const TechniqueRow& row = *plan.row;
     const std::vector<std::string>& defines = plan.defines;
 
     std::vector<LightView> views;
@@ -80,7 +84,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         ShadowMaps& m = maps[{t.light, t.cascade}];
         auto& layers = m.tex[t.role];
         const auto filtered = inputs.filteredMoments.find(t.light);
-        if (t.role == "raw" && filtered != inputs.filteredMoments.end()) {
+        if (t.role == TextureRole::Raw && filtered != inputs.filteredMoments.end()) {
             if (plan.cascadeCount(t.light) > 1)
                 throw std::invalid_argument("RenderInputs::filteredMoments: light " +
                                             std::to_string(t.light) + " has cascades");
@@ -93,7 +97,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         for (int k = 0; k < t.layers; ++k)
             layers.push_back(Texture::create(t.width, t.height, t.glFormat, samplerFilter(t.role)));
         const auto raw = inputs.rawMaps.find(t.light);
-        if (raw != inputs.rawMaps.end() && (t.role == "raw" || t.role == "second")) {
+        if (raw != inputs.rawMaps.end() && (t.role == TextureRole::Raw || t.role == TextureRole::Second)) {
             const RawShadowMap& all = raw->second;
             if (t.cascade > int(all.cascades.size()))
                 throw std::invalid_argument("RenderInputs::rawMaps: light " +
@@ -104,9 +108,9 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         }
     }
     for (auto& [id, m] : maps) {
-        for (auto& t : m.tex.at("raw")) m.forLighting.push_back(&t);
+        for (auto& t : m.tex.at(TextureRole::Raw)) m.forLighting.push_back(&t);
         // A given second-depth map: what its (skipped) peel pass would have added.
-        if (m.givenRaw && m.tex.count("second")) m.forLighting.push_back(&m.one("second"));
+        if (m.givenRaw && m.tex.count(TextureRole::Second)) m.forLighting.push_back(&m.one(TextureRole::Second));
     }
     const std::vector<glm::vec4> clear = shadowClearValues(fx);
 
@@ -131,7 +135,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         }
         // A filter's input: the raw map, or its RGBA32F copy where it is not RGBA32F.
         auto filterInput = [&]() -> std::vector<Texture>& {
-            return m->tex.count("wide") ? m->tex.at("wide") : m->tex.at("raw");
+            return m->tex.count(TextureRole::Wide) ? m->tex.at(TextureRole::Wide) : m->tex.at(TextureRole::Raw);
         };
         switch (pass.kind) {
             case PassKind::Shadow:
@@ -140,15 +144,15 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                               pass.kind == PassKind::ShadowSecond, *m, clear, fx, geometry);
                 break;
             case PassKind::Widen: {
-                auto& raw = m->tex.at("raw");
-                for (size_t k = 0; k < raw.size(); ++k) widenPass(raw[k], m->tex.at("wide")[k]);
+                auto& raw = m->tex.at(TextureRole::Raw);
+                for (size_t k = 0; k < raw.size(); ++k) widenPass(raw[k], m->tex.at(TextureRole::Wide)[k]);
                 break;
             }
             case PassKind::GaussianX:
             case PassKind::GaussianY: {
                 const bool x = pass.kind == PassKind::GaussianX;
-                auto& src = x ? filterInput() : m->tex.at("scratch");
-                auto& dst = m->tex.at(x ? "scratch" : "filtered");
+                auto& src = x ? filterInput() : m->tex.at(TextureRole::Scratch);
+                auto& dst = m->tex.at(x ? TextureRole::Scratch : TextureRole::Filtered);
                 for (size_t k = 0; k < src.size(); ++k)
                     gaussianPass(src[k], dst[k], fx.gaussianRadius, fx.gaussianSigma,
                                  x ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
@@ -161,8 +165,8 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             case PassKind::SatRows:
             case PassKind::SatColumns: {
                 const bool rows = pass.kind == PassKind::SatRows;
-                auto& src = rows ? filterInput() : m->tex.at("scratch");
-                auto& dst = m->tex.at(rows ? "scratch" : "sat");
+                auto& src = rows ? filterInput() : m->tex.at(TextureRole::Scratch);
+                auto& dst = m->tex.at(rows ? TextureRole::Scratch : TextureRole::Sat);
                 for (size_t k = 0; k < src.size(); ++k)
                     satPass(src[k], dst[k], rows ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
                 if (!rows) {
@@ -172,9 +176,9 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 break;
             }
             case PassKind::SatResolve: {
-                auto& sat = m->tex.at("sat");
+                auto& sat = m->tex.at(TextureRole::Sat);
                 for (size_t k = 0; k < sat.size(); ++k)
-                    satResolvePass(sat[k], m->tex.at("filtered")[k], fx.satKernelTexels);
+                    satResolvePass(sat[k], m->tex.at(TextureRole::Filtered)[k], fx.satKernelTexels);
                 break;
             }
             case PassKind::Lighting: {
@@ -196,8 +200,8 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             if (m.given) continue;  // a filtered map stood in: there is no raw map
             RawShadowMap& light = result.rawMaps[id.light];
             RawShadowMap& out = id.cascade == 0 ? light : light.cascades.emplace_back();
-            for (const Texture& t : m.tex.at("raw")) out.raw.push_back(t.read());
-            if (m.tex.count("second")) out.second = m.one("second").read();
+            for (const Texture& t : m.tex.at(TextureRole::Raw)) out.raw.push_back(t.read());
+            if (m.tex.count(TextureRole::Second)) out.second = m.one(TextureRole::Second).read();
         }
     for (const auto& [ci, t] : targets) {
         const std::string suffix = ci == 0 ? "" : "_" + scene.cameras[ci].name;

@@ -2,6 +2,8 @@
 // and the lighting pass that shades a camera's view from every light's (filtered) maps.
 #include "render_internal.h"
 
+#include "scene_limits.h"
+
 #include <cctype>
 #include <cmath>
 #include <stdexcept>
@@ -20,7 +22,7 @@ void setTechniqueParameters(const GlProgram& p, const ShadowEffect& fx) {
 // The uniforms of a technique's lighting permutation: its parameters as u<Name>,
 // the sampler units, the map size and the Gaussian weights (PCF uses the moment filter's).
 void setTechniqueUniforms(const GlProgram& p, const ShadowEffect& fx, int unitsUsed) {
-    constexpr int kMaxMaps = 16;  // SL_MAX_MAPS in shaders/techniques/common.glsl
+    constexpr int kMaxMaps = kMaxShadowMaps;  // SL_MAX_MAPS in the shaders
     if (unitsUsed > kMaxMaps)
         throw std::runtime_error("the shadow maps need " + std::to_string(unitsUsed) +
                                  " texture units; the lighting pass has " +
@@ -57,9 +59,9 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
                    const ShadowEffect& fx, const SceneGeometry& geometry) {
     const int n = fx.mapSize;
     std::vector<const Texture*> colors;
-    if (second) colors.push_back(&m.one("second"));
-    else for (const Texture& t : m.tex.at("raw")) colors.push_back(&t);
-    FramebufferHandle fb = makeFramebuffer(colors, m.one("depth"));
+    if (second) colors.push_back(&m.one(TextureRole::Second));
+    else for (const Texture& t : m.tex.at(TextureRole::Raw)) colors.push_back(&t);
+    FramebufferHandle fb = makeFramebuffer(colors, m.one(TextureRole::Depth));
     const float farDepth = 1.0f;
     for (size_t k = 0; k < colors.size(); ++k) {
         // Relative depth 1 everywhere: nothing in front (msm4: moments (1, 1, 1, 1)).
@@ -79,8 +81,8 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
         const auto eps = float(techniqueParameter(fx, "peelEpsilon"));
         p.set("uPeelEpsilon", eps);
         p.set("uFirstDepth", 0);
-        gl::BindTextureUnit(0, m.one("raw").id());
-        m.forLighting.push_back(&m.one("second"));
+        gl::BindTextureUnit(0, m.one(TextureRole::Raw).id());
+        m.forLighting.push_back(&m.one(TextureRole::Second));
     }
     geometry.draw(p, true, false);
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -90,7 +92,7 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
                      const std::vector<LightView>& views, ShadowMapSet& maps,
                      const SceneGeometry& geometry, Texture& colorTarget,
                      Texture& shadowTarget, Texture& depthTarget) {
-    const ShadowEffect& fx = scene.shadow;
+    const ShadowEffect& fx = plan.effect;
     colorTarget = Texture::create(cam.width, cam.height, GL_RGBA32F);
     shadowTarget = Texture::create(cam.width, cam.height, GL_R32F);
     depthTarget = Texture::create(cam.width, cam.height, GL_DEPTH_COMPONENT32F);
@@ -111,8 +113,7 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
     p.set("uMomentBias", fx.momentBias);
     p.set("uDepthBias", fx.depthBias);
     p.set("uSatKernel", fx.satKernelTexels);
-    constexpr int kMaxCascades = 4;  // SL_MAX_CASCADES in lighting.frag
-    constexpr int kSlots = 4 * kMaxCascades;
+    constexpr int kSlots = kMaxLights * kMaxCascades;  // SL_MAX_LIGHTS · SL_MAX_CASCADES
     std::vector<glm::vec3> eye, forward, color;
     std::vector<int> isSpot, mapIndex, cascades, units(kSlots);
     for (int k = 0; k < kSlots; ++k) units[k] = k;

@@ -1,6 +1,8 @@
 // The technique table (see technique.h) and the checks that keep a scene within its row.
 #include "technique.h"
 
+#include "scene_limits.h"
+
 #include <GL/glcorearb.h>
 #include <nlohmann/json.hpp>
 
@@ -239,6 +241,7 @@ std::vector<std::string> techniqueDefines(const ShadowEffect& fx) {
     if (row.msmStage) d.push_back("SL_STAGE_MSM");
     if (fx.filter == FilterKind::Gaussian) d.push_back("SL_FILTER_GAUSSIAN");
     if (fx.filter == FilterKind::Sat) d.push_back("SL_FILTER_SAT");
+    for (const std::string& limit : limitDefines()) d.push_back(limit);
     return d;
 }
 

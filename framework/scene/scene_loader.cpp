@@ -6,6 +6,7 @@
 // as "<file>:<line>:<column>: invalid JSON ...".
 #include "scene.h"
 #include "scene_json.h"
+#include "scene_limits.h"
 #include "technique.h"
 
 #include <fcntl.h>
@@ -82,7 +83,7 @@ Light readLight(const Reader& R, const Node& n) {
     if (auto v = n["castsShadows"]) l.castsShadows = R.boolean(v);
     if (auto v = n["coneDegrees"]) l.coneDegrees = float(R.number(v, Range::open(0, 170)));
     if (auto v = n["extent"]) l.extent = float(R.number(v, Range::positive()));
-    if (auto v = n["cascades"]) l.cascades = R.integer(v, Range::closed(1, 4));
+    if (auto v = n["cascades"]) l.cascades = R.integer(v, Range::closed(1, kMaxCascades));
     if (auto v = n["cascadeSplit"]) l.cascadeSplit = CascadeSplit(R.choice(v, kCascadeSplits));
     if (auto v = n["cascadeLambda"]) {
         l.cascadeLambda = float(R.number(v, Range::closed(0, 1)));
@@ -292,6 +293,22 @@ void checkDepth(const std::string& text, const std::string& path) {
     }
 }
 
+// The textures lighting samples: per shadowing light, per cascade, the map's layers (and the
+// second-depth map). Over kMaxShadowMaps the scene is refused here, not by the renderer.
+void checkMapCount(const Reader& R, const Node& lights, const Scene& s) {
+    const TechniqueRow& row = techniqueRow(s.shadow.technique);
+    const int perSlot = mapLayout(s.shadow).layers + (row.secondDepth ? 1 : 0);
+    int maps = 0;
+    for (const Light& l : s.lights)
+        if (l.castsShadows) maps += perSlot * (l.type == LightType::Directional ? l.cascades : 1);
+    if (maps > kMaxShadowMaps)
+        R.fail(lights.ptr,
+               "at most " + std::to_string(kMaxShadowMaps) + " shadow maps in all (the lighting "
+               "pass's limit; technique \"" + row.name + "\" takes " + std::to_string(perSlot) +
+               " per light and cascade)",
+               std::to_string(maps));
+}
+
 }  // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& path) {
@@ -337,6 +354,9 @@ Scene parseScene(const std::string& jsonText, const std::string& path) {
 
     if (auto v = r["lights"]) {
         const size_t count = R.array(v, 0, "an array of lights (it may be empty)");
+        if (count > size_t(kMaxLights))
+            R.fail(v.ptr, "at most " + std::to_string(kMaxLights) + " lights (the lighting pass's limit)",
+                   std::to_string(count));
         for (size_t i = 0; i < count; ++i) s.lights.push_back(readLight(R, v[i]));
     }
     const Node objects = r["objects"];
@@ -347,6 +367,7 @@ Scene parseScene(const std::string& jsonText, const std::string& path) {
         return l.castsShadows && l.type == LightType::Spot;
     });
     if (auto v = r["shadow"]) s.shadow = readShadow(R, v, spot);
+    checkMapCount(R, r["lights"], s);
     if (auto v = r["ambient"]) s.ambient = R.vec3(v, Range::atLeast(0));
     if (auto v = r["background"]) s.background = R.vec3(v, Range::atLeast(0));
 

@@ -61,9 +61,9 @@ std::string uniformName(const std::string& parameter) {
 
 }  // namespace
 
-RawMapKey rawMapKey(const Scene& scene, const PassPlan& plan, int light,
+RawMapKey rawMapKey(const Scene& /*scene*/, const PassPlan& plan, int light,
                     const ShaderLibrary& library, const std::string& sceneDigest) {
-    const ShadowEffect& fx = scene.shadow;
+    const ShadowEffect& fx = plan.effect;  // the filter it runs decides the map's format
     const TechniqueRow& row = techniqueRow(fx.technique);
     const MapLayout layout = mapLayout(fx);
     RawMapKey key;

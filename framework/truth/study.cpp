@@ -83,6 +83,18 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
                     out.push_back({spec, t, params, momentBias, f, 0, size, lightSize});
                     continue;
                 }
+                ShadowEffect fx;
+                fx.technique = t;
+                fx.filter = f;
+                if (!kernelReachesImage(fx) && !o.radii.empty()) {  // every radius, one frame
+                    out.push_back({spec, t, params, momentBias, f, o.radii.front(), size, lightSize});
+                    if (size == o.mapSizes.front() && lightSize == lightSizes.front() &&
+                        o.radii.size() > 1)
+                        notes.push_back(spec + ": its " + toString(f) + " kernel does not reach the "
+                                        "image (it picks its box per pixel): one row, radius " +
+                                        std::to_string(o.radii.front()));
+                    continue;
+                }
                 for (int r : o.radii)
                     out.push_back({spec, t, params, momentBias, f, r, size, lightSize});
             }

@@ -2,8 +2,7 @@
 // answers, the shadow-map array, filtered reads (bilinear, or a box from the solution's SAT
 // through its satBoxAverage), the receiver's bias, and the geometry of a penumbra. Relative
 // depth is the solution's relativeDepth (moments.glsl). Included by lighting.frag and the
-// probe shader.
-#define SL_MAX_MAPS 16
+// probe shader. SL_MAX_MAPS comes as a define (framework/scene/scene_limits.h).
 
 // What the lighting pass knows about a receiver, in the light's shadow map.
 struct ShadowQuery {
@@ -21,6 +20,9 @@ struct ShadowQuery {
 };
 
 #ifndef SL_PROBE
+#ifndef SL_MAX_MAPS
+#error "SL_MAX_MAPS is not defined: the framework passes it with the technique's defines"
+#endif
 uniform sampler2D uShadowMaps[SL_MAX_MAPS];
 #endif
 uniform vec2 uMapTexels;  // map width and height, texels
