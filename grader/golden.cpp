@@ -270,10 +270,6 @@ GoldenRun runGoldens(const GoldenOptions& o) {
     return run;
 }
 
-std::vector<std::string> makeGoldens(const GoldenOptions& options) {
-    return runGoldens(options).stale;
-}
-
 void checkReferenceProbes(const std::vector<GradedScene>& scenes,
                           const std::function<fs::path(size_t, const std::string&)>& file) {
     std::vector<std::string> errors;
@@ -303,12 +299,6 @@ void checkReferenceProbes(const std::vector<GradedScene>& scenes,
     if (!errors.empty())
         throw std::runtime_error("the reference does not match the scenes' probes, so the scenes "
                                  "(or their probes) are wrong:\n" + joined(errors, "\n"));
-}
-
-Image readGolden(const fs::path& goldens, const std::string& scene, const std::string& image) {
-    const fs::path file = goldens / scene / (image + ".exr");
-    if (!fs::exists(file)) return {};
-    return readImage(file);
 }
 
 nlohmann::json readManifest(const fs::path& goldens) {

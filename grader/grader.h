@@ -38,18 +38,9 @@ struct GradeOptions {
     fs::path goldens;             // default: scenes/goldens
     fs::path rubric;              // default: grader/rubric.json
     bool report = true;           // write OUT/report
-    bool quiet = false;           // no table on stdout
     std::string backend = "auto";
     bool keepWork = false;        // keep OUT/.work (the workers' images and logs)
     fs::path referenceImages;     // live mode: reference renders made already (batch)
-};
-
-// What one child process did.
-struct JobOutcome {
-    enum Kind { Ok, TimedOut, ShaderFailed, Crashed, Failed, NotRun } kind = NotRun;
-    std::string message;     // for the student: reason, with file:line for shader errors
-    double seconds = 0.0;
-    nlohmann::json worker;   // the worker's worker.json (images written, stub notes)
 };
 
 // One Gradescope test: a (scene, stage) pair.
