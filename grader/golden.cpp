@@ -99,7 +99,7 @@ void renderLadderStandIns(const Scene& full, Renderer& renderer, const fs::path&
 nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, const fs::path& dir,
                            const ContextInfo& info, std::vector<std::string>& probeErrors,
                            bool standIns) {
-    Scene scene = loadScene(gs.path.string());
+    const Scene& scene = *gs.scene;
     Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
     RenderResult result = renderer.render(scene, planPasses(scene));
     const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
@@ -275,7 +275,7 @@ void checkReferenceProbes(const std::vector<GradedScene>& scenes,
     std::vector<std::string> errors;
     int hidden = 0;
     for (size_t i = 0; i < scenes.size(); ++i) {
-        const Scene scene = loadScene(scenes[i].path.string());
+        const Scene& scene = *scenes[i].scene;
         std::map<std::string, Image> images;
         bool missing = false;
         for (const ShadowProbe& p : scene.probes) {

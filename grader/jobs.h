@@ -22,13 +22,10 @@ bool haveReference();  // reference/ holds all five stage files
 // Measured: a quarter of the shader-compile CPU. Empty when the folder cannot be made.
 std::vector<std::pair<std::string, std::string>> shaderCacheEnvironment(const GradeOptions& o);
 
-// `shadowlab grade-worker ...` for one (scene, stage), its images and log going to `out`.
-// The log is scrubbed of the grader's own paths (submission/, shaders/ ... stay).
-ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std::string& stage,
+// The worker for one (scene, stage) (stage nullptr: the reference render), its images and log
+// going to `out`. The log is scrubbed of the grader's own paths (submission/, shaders/ ... stay).
+ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const StageRow* stage,
                      const fs::path& input, const fs::path& out);
-
-// Each scene once (`--scenes classic,classic`); two different files with one name: an error.
-std::vector<GradedScene> uniqueScenes(const std::vector<GradedScene>& scenes);
 
 // Time limits. With --timeout S: S for every render. Otherwise a render may take
 // kTimeoutFactor times the reference's own render of that scene on this machine, at the same

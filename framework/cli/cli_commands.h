@@ -2,7 +2,7 @@
 // grader/cli_*.cpp) adds its subcommands; main.cpp parses and maps errors to exit codes.
 #pragma once
 
-#include "cli_exit_codes.h"
+#include "exit_codes.h"
 
 #include <CLI/CLI.hpp>
 
