@@ -1,4 +1,4 @@
-// shadowlab: the command line. The subcommands live in cli_*.cpp and grader/cli_*.cpp; this
+// shadowlab: the command line. The subcommands live in cli_*.cpp (the grader's in cli_grade.cpp); this
 // file parses and turns every error into a message and an exit code (cli_commands.h). Global
 // options live here too: --backend is accepted before the subcommand and on every subcommand
 // that renders; the kit's root (paths.h) is reported by info and grade.
