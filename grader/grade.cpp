@@ -16,6 +16,7 @@
 #include "scene_list.h"
 #include "score_render.h"
 #include "shader_source.h"
+#include "worker.h"
 
 #include "image_io.h"
 #include "raw_image.h"

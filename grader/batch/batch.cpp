@@ -12,7 +12,6 @@
 #include "results.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -52,8 +51,6 @@ ChildSpec gradeSpec(const GradeOptions& o, const fs::path& logPath) {
     spec.run = [o] { return gradeAndPrint(o); };
     return spec;
 }
-
-double round2(double v) { return std::round(v * 100.0) / 100.0; }
 
 }  // namespace
 
