@@ -1,7 +1,8 @@
-// grader.h: the types the grader's files share — stages, options, one render job's outcome and
-// one scored test. The concepts live in their own files: stages, scene_list, intake,
-// isolation (child processes), worker (what a child renders), raw_image, metrics, rubric,
-// golden, results, report, jobs, grade (one submission), batch, package, cli_grade (docs/grading.md).
+// grader.h: the types the grader's files share: a grade's options, one scored test, a grade's
+// summary and a batch's row of it. The concepts live in their own files, one folder per part:
+// intake/ (intake, out_guard, isolation, worker, jobs, raw_image), scoring/ (stages, rubric,
+// points, metrics, score_render), output/ (results, report, report_diagnosis), goldens/,
+// packaging/, batch/; grade.cpp grades one submission (docs/grading.md).
 #pragma once
 
 #include "image.h"
