@@ -193,7 +193,7 @@ private:
         const auto times = readReferenceTimes(o_.referenceImages);
         for (size_t i = 0; i < scenes_.size(); ++i)
             if (times.count(scenes_[i].name)) refSeconds_[i] = times.at(scenes_[i].name);
-        if (mode_ == "golden") decodeGoldens();
+        if (mode_ == "golden") decodeGoldens(o_, scenes_, goldens_);
         runPhase(references);
         checkReferenceProbes(scenes_, [this](size_t i, const std::string& image) {
             return referenceFile(i, image);
@@ -338,38 +338,6 @@ private:
         std::error_code ec;
         if (fs::exists(decoded, ec)) return decoded;
         return goldenFolder(scenes_[scene], goldens_) / scenes_[scene].name / (image + ".exr");
-    }
-
-    // Golden mode: each scene's golden EXRs decoded once, by a child process, into
-    // OUT/.work-<pid>/golden/<scene>/<image>.raw (the same floats), which the probe check, the
-    // scoring and the workers' inputs then read. Reading an EXR here would start OpenEXR's
-    // thread pool in this process, after which no worker can be forked (isolation.h): each was
-    // exec'd, and each that read a golden loaded the image codec again. An image that does not
-    // decode is read from its EXR as before (same messages).
-    void decodeGoldens() {
-        std::vector<ChildSpec> specs;
-        for (const auto& scene : scenes_) {
-            const fs::path from = goldenFolder(scene, goldens_) / scene.name;
-            const fs::path to = workDir(o_) / "golden" / scene.name;
-            fs::create_directories(to);
-            ChildSpec spec;
-            spec.logPath = to / "log.txt";
-            spec.run = [from, to] {
-                std::error_code ec;
-                for (const auto& f : fs::directory_iterator(from, ec)) {
-                    if (f.path().extension() != ".exr") continue;
-                    const fs::path raw = to / (f.path().stem().string() + ".raw");
-                    try {
-                        writeRaw(readAnyImage(f.path()), raw.string() + ".part");
-                        fs::rename(raw.string() + ".part", raw);
-                    } catch (const std::exception&) {
-                    }
-                }
-                return 0;
-            };
-            specs.push_back(spec);
-        }
-        runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs);
     }
 
     // Runs the jobs at `which` (indices into jobs_), two at a time; scores as they end.

@@ -3,6 +3,9 @@
 #include "jobs.h"
 
 #include "gl_context.h"
+#include "golden.h"
+#include "image_io.h"
+#include "raw_image.h"
 #include "paths.h"
 #include "shader_source.h"
 #include "worker.h"
@@ -92,6 +95,32 @@ std::map<std::string, double> readReferenceTimes(const fs::path& dir) {
         for (const auto& [name, v] : j.items())
             if (v.is_number()) times[name] = v.get<double>();
     return times;
+}
+
+void decodeGoldens(const GradeOptions& o, const std::vector<GradedScene>& scenes, const fs::path& goldens) {
+    std::vector<ChildSpec> specs;
+    for (const auto& scene : scenes) {
+        const fs::path from = goldenFolder(scene, goldens) / scene.name;
+        const fs::path to = workDir(o) / "golden" / scene.name;
+        fs::create_directories(to);
+        ChildSpec spec;
+        spec.logPath = to / "log.txt";
+        spec.run = [from, to] {
+            std::error_code ec;
+            for (const auto& f : fs::directory_iterator(from, ec)) {
+                if (f.path().extension() != ".exr") continue;
+                const fs::path raw = to / (f.path().stem().string() + ".raw");
+                try {
+                    writeRaw(readAnyImage(f.path()), raw.string() + ".part");
+                    fs::rename(raw.string() + ".part", raw);
+                } catch (const std::exception&) {
+                }
+            }
+            return 0;
+        };
+        specs.push_back(spec);
+    }
+    runChildren(specs, {kTimeoutDefault, o.memoryMb}, o.jobs);
 }
 
 std::string resolveReferenceMode(const std::string& requested) {

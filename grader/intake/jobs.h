@@ -39,6 +39,14 @@ double stageTimeout(const GradeOptions& o, double referenceSeconds);
 std::string timeoutNote(const GradeOptions& o, double referenceSeconds);
 double referenceTimeout(const GradeOptions& o);  // a reference render's own limit
 
+// Golden mode: each scene's golden EXRs decoded once, by a child process, into
+// OUT/.work-<pid>/golden/<scene>/<image>.raw (the same floats), which the probe check, the
+// scoring and the workers' inputs then read. Reading an EXR in the grader would start OpenEXR's
+// thread pool there, after which no worker can be forked (isolation.h): each was exec'd, and
+// each that read a golden loaded the image codec again. An image that does not decode is read
+// from its EXR as before (same messages).
+void decodeGoldens(const GradeOptions& o, const std::vector<GradedScene>& scenes, const fs::path& goldens);
+
 // The reference renders' seconds per scene, kept next to them (REF/times.json) for a batch.
 std::map<std::string, double> readReferenceTimes(const fs::path& dir);
 
