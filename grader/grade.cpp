@@ -16,6 +16,7 @@
 #include "scene_list.h"
 #include "score_render.h"
 #include "shader_source.h"
+#include "worker.h"
 
 #include "image_io.h"
 #include "raw_image.h"
@@ -35,13 +36,22 @@ namespace {
 
 struct Job {
     size_t scene;
-    std::string stage;
+    const StageRow* row;  // nullptr: the reference render
     fs::path out;
     std::string missing;  // "file: reason" when a file it needs was not taken
     ChildResult child;
     bool ran = false;
     bool dropped = false;  // "either" mode: a final of the filter not kept (not rendered, no test)
     std::string notRunReason;  // not rendered: another scene's render showed the stage a stub
+    bool reference() const { return row == nullptr; }
+    bool is(Stage stage) const { return row && row->stage == stage; }
+};
+
+// The renders of one grade in the order they start: the reference renders (their times set
+// the others' limits), the stage renders, and in "either" mode the finals of the filter scenes
+// (they wait for the filter stages' scores).
+struct Schedule {
+    std::vector<size_t> references, stages, finals;
 };
 
 // Phase times on stderr with SHADOWLAB_GRADER_TIMING=1 (docs/performance.md).
@@ -55,10 +65,12 @@ struct Stopwatch {
     }
 };
 
-Job makeJob(size_t scene, const std::string& stage, const fs::path& out) {
+std::string jobName(const Job& j) { return j.row ? j.row->name : "reference"; }
+
+Job makeJob(size_t scene, const StageRow* row, const fs::path& out) {
     Job j;
     j.scene = scene;
-    j.stage = stage;
+    j.row = row;
     j.out = out;
     return j;
 }
@@ -69,18 +81,46 @@ public:
 
     GradeSummary run() {
         GradeSummary s;
+        takeSubmission(s);
+        checkGoldens(s);
+        const Schedule schedule = planJobs();
+        Stopwatch clock;
+        renderReferences(schedule.references);
+        clock.lap("reference renders");
+        renderStages(schedule);
+        clock.lap("stage renders (and scores)");
+        renderWarnings(s);
+        total(s);
+        clock.lap("comparisons and report");
+        std::error_code ec;
+        if (!o_.keepWork) fs::remove_all(workDir(o_), ec);
+        return s;
+    }
+
+private:
+    // The submission's files copied into the work folder, the scenes and the reference mode.
+    void takeSubmission(GradeSummary& s) {
         const fs::path work = workDir(o_);
         std::error_code ec;
         fs::remove_all(work, ec);
         fs::create_directories(work);
-        intake_ = takeSubmission(o_.submission, work / "submission");
-        scenes_ = uniqueScenes(gradedScenes(o_.scenes));
+        intake_ = grader::takeSubmission(o_.submission, work / "submission");
+        scenes_ = gradedScenes(o_.scenes);
         haveRef_ = haveReference();
         mode_ = resolveReferenceMode(o_.reference);
         s.referenceMode = mode_;
         if (mode_ == "live" && !haveRef_)
             throw std::runtime_error("--reference live needs reference/; use --reference golden");
         goldens_ = o_.goldens.empty() ? repoRoot() / "scenes" / "goldens" : o_.goldens;
+        if (!intake_.ignored.empty()) {
+            std::string names;
+            for (const auto& n : intake_.ignored) names += " " + n;
+            ignoredWarning_ = "ignored (not stage files):" + names;
+        }
+    }
+
+    // Golden mode: every scene has goldens, made from the scene file as it is now.
+    void checkGoldens(GradeSummary& s) {
         if (mode_ == "golden") {
             for (const auto& scene : scenes_) {
                 // A hidden scene's goldens are in goldens/ next to its file (golden.h).
@@ -99,75 +139,81 @@ public:
                     s.warnings.push_back("scene " + scene.name + " changed since its goldens were made");
             }
         }
-        if (!intake_.ignored.empty()) {
-            std::string names;
-            for (const auto& n : intake_.ignored) names += " " + n;
-            s.warnings.push_back("ignored (not stage files):" + names);
-        }
+        if (!ignoredWarning_.empty()) s.warnings.push_back(ignoredWarning_);
+    }
 
-        // Phase A: reference renders and the stages that need no reference input file; phase
-        // B: the stages that read a reference image (run after the reference renders).
-        std::vector<Job> phaseA, phaseB;
+    // One job per render, in scoring order (that of the report's findings): the stage renders
+    // without reference input, the robustness test, then the stages that read a reference
+    // image; and the order they start in.
+    Schedule planJobs() {
+        std::vector<Job> own, needInput;
         for (size_t i = 0; i < scenes_.size(); ++i) {
-            if (mode_ == "live" && o_.referenceImages.empty()) phaseA.push_back(makeJob(i, "reference", work / "ref" / scenes_[i].name));
-            for (const auto& stage : stageNames()) {
-                if (!stageApplies(stage, scenes_[i].filter)) continue;
-                Job job = makeJob(i, stage, work / scenes_[i].name / stage);
-                for (const auto& f : neededFiles(stage, scenes_[i].filter))
-                    if (!intake_.has(f) && job.missing.empty())
-                        job.missing = f + ": " + intake_.refused.at(f);
-                // These read a reference image as input: after the reference renders.
-                const bool needsInput = stage == "gaussian" || stage == "sat" || stage == "msm";
-                (needsInput ? phaseB : phaseA).push_back(job);
+            if (mode_ == "live" && o_.referenceImages.empty())
+                own.push_back(makeJob(i, nullptr, workDir(o_) / "ref" / scenes_[i].name));
+            for (const StageRow& row : stageTable()) {
+                if (!row.perScene || (*row.filter && row.filter != scenes_[i].filter)) continue;
+                Job job = makeJob(i, &row, workDir(o_) / scenes_[i].name / row.name);
+                job.missing = firstMissing(neededFiles(row, scenes_[i].filter));
+                (*row.input ? needInput : own).push_back(job);
             }
         }
         // The robustness stage: one test, the submission's msm.glsl on the hard cases.
         if (!scenes_.empty()) {
-            Job job = makeJob(0, "robustness", work / "robustness");
-            if (!intake_.has("msm.glsl")) job.missing = "msm.glsl: " + intake_.refused.at("msm.glsl");
-            phaseA.push_back(job);
+            const StageRow& row = stageRow(Stage::Robustness);
+            Job job = makeJob(0, &row, workDir(o_) / row.name);
+            job.missing = firstMissing(row.files);
+            own.push_back(job);
         }
-        Stopwatch clock;
-        // One list in scoring order (that of the report's findings): the stage renders without
-        // reference input, the robustness test, then the stages that read a reference image.
-        jobs_ = std::move(phaseA);
-        jobs_.insert(jobs_.end(), phaseB.begin(), phaseB.end());
-        // The reference renders first: their times set the other renders' limits (jobs.h).
-        std::vector<size_t> refJobs, stageJobs, finals;
+        jobs_ = std::move(own);
+        jobs_.insert(jobs_.end(), needInput.begin(), needInput.end());
+        Schedule order;
         for (size_t k = 0; k < jobs_.size(); ++k) {
-            if (jobs_[k].stage == "reference") refJobs.push_back(k);
+            if (jobs_[k].reference()) order.references.push_back(k);
             // "either": the final renders of a filter's scenes wait for the filter stages, and
             // only the kept filter's are rendered (assignPoints drops the others' tests).
-            else if (rubric_.filters == "either" && jobs_[k].stage == "final" &&
+            else if (rubric_.filters == "either" && jobs_[k].is(Stage::Final) &&
                      scenes_[jobs_[k].scene].filter != "none")
-                finals.push_back(k);
-            else stageJobs.push_back(k);
+                order.finals.push_back(k);
+            else order.stages.push_back(k);
         }
-        stageJobs = scoutsFirst(stageJobs);
+        order.stages = scoutsFirst(order.stages);
+        return order;
+    }
+
+    // "file: reason" for the first of `files` the intake did not take, "" if it took them all.
+    std::string firstMissing(const std::vector<std::string>& files) const {
+        for (const auto& f : files)
+            if (!intake_.has(f)) return f + ": " + intake_.refused.at(f);
+        return "";
+    }
+
+    // The reference renders (live), or the goldens decoded; then the scenes' probes must hold
+    // on the reference they are graded against, or grading stops.
+    void renderReferences(const std::vector<size_t>& references) {
         const auto times = readReferenceTimes(o_.referenceImages);
         for (size_t i = 0; i < scenes_.size(); ++i)
             if (times.count(scenes_[i].name)) refSeconds_[i] = times.at(scenes_[i].name);
-        if (mode_ == "golden") decodeGoldens();
-        runPhase(refJobs);
-        clock.lap("reference renders");
-        // The scenes' probes hold on the reference they are graded against, or grading stops.
+        if (mode_ == "golden") decodeGoldens(o_, scenes_, goldens_);
+        runPhase(references);
         checkReferenceProbes(scenes_, [this](size_t i, const std::string& image) {
             return referenceFile(i, image);
         });
+    }
+
+    // Every stage render in one run: a barrier between the stages without and with reference
+    // input left a core idle at its end, and cost a submission that loops in every stage one
+    // more whole time limit. Each test is scored as soon as it and those before it in jobs_
+    // are done, while the next renders run.
+    void renderStages(const Schedule& schedule) {
         if (o_.report) report_ = std::make_unique<ReportWriter>(o_.out / "report");
-        // Every stage render in one run: a barrier between the stages without and with
-        // reference input left a core idle at its end, and cost a submission that loops in
-        // every stage one more whole time limit. Each test is scored as soon as it and those
-        // before it in jobs_ are done, while the next renders run.
-        runPhase(stageJobs);
-        if (!finals.empty()) {
+        runPhase(schedule.stages);
+        if (!schedule.finals.empty()) {
             std::vector<TestResult> filterTests;
-            for (size_t k : stageJobs)
-                if (jobs_[k].stage == "gaussian" || jobs_[k].stage == "sat")
-                    filterTests.push_back(score(jobs_[k], nullptr));
+            for (size_t k : schedule.stages)
+                if (*jobs_[k].row->filter) filterTests.push_back(score(jobs_[k], nullptr));
             const std::string kept = betterFilter(filterTests);
             std::vector<size_t> run;
-            for (size_t k : finals) {
+            for (size_t k : schedule.finals) {
                 jobs_[k].dropped = !kept.empty() && scenes_[jobs_[k].scene].filter != kept;
                 if (!jobs_[k].dropped) run.push_back(k);
             }
@@ -175,17 +221,25 @@ public:
             runPhase(run);
         }
         scoreReady();
-        clock.lap("stage renders (and scores)");
+    }
+
+    // The renderer the workers ran against the goldens' (golden mode), or the reference
+    // renders that failed (live).
+    void renderWarnings(GradeSummary& s) const {
         if (mode_ == "golden") {
             for (const auto& w : manifestWarnings(readManifest(goldens_), running_))
                 s.warnings.push_back(w);
-        } else {
-            for (auto& j : jobs_)
-                if (j.stage == "reference" && !(j.child.kind == ChildResult::Exited &&
-                                                j.child.exitCode == 0))
-                    s.warnings.push_back("reference render of " + scenes_[j.scene].name +
-                                         " failed: " + failureText(j.child, o_));
+            return;
         }
+        for (const auto& j : jobs_)
+            if (j.reference() && !(j.child.kind == ChildResult::Exited && j.child.exitCode == 0))
+                s.warnings.push_back("reference render of " + scenes_[j.scene].name +
+                                     " failed: " + failureText(j.child, o_));
+    }
+
+    // The tests in report order, their points in exact hundredths under the rubric's filter
+    // mode (points.h), what the failures look like, and the report's page.
+    void total(GradeSummary& s) {
         s.tests = std::move(tests_);
         std::sort(s.tests.begin(), s.tests.end(), [](const TestResult& a, const TestResult& b) {
             auto rank = [](const std::string& st) {
@@ -194,16 +248,11 @@ public:
             };
             return a.scene != b.scene ? a.scene < b.scene : rank(a.stage) < rank(b.stage);
         });
-        // Points in exact hundredths; the rubric's filter mode (points.h).
         assignPoints(s, rubric_);
         s.findings = diagnose(s, imageFindings_, false);
         if (report_) report_->finish(s);
-        clock.lap("comparisons and report");
-        if (!o_.keepWork) fs::remove_all(work, ec);
-        return s;
     }
 
-private:
     // Scouts: a stub stage's output is -1 on every scene, so once one render of a stage shows
     // the stub everywhere, its renders of the other scenes, and the finals that use it, are not
     // run: they would score 0 as "not implemented" all the same. A student's first `./kit check`
@@ -215,13 +264,12 @@ private:
         std::vector<size_t> first, rest;
         for (size_t k : order) {
             const Job& j = jobs_[k];
-            const std::string stage = j.stage == "robustness" ? "msm" : j.stage;
-            const bool scout = j.missing.empty() && stage != "final" && (stage != "msm" || j.stage == "robustness") &&
-                               scouts_.emplace(stage, k).second;
+            const bool scout = j.missing.empty() && j.row->scoutedBy == j.row->stage &&
+                               scouts_.emplace(j.row->stage, k).second;
             (scout ? first : rest).push_back(k);
         }
         std::stable_partition(first.begin(), first.end(),
-                              [this](size_t k) { return jobs_[k].stage == "robustness"; });  // short
+                              [this](size_t k) { return jobs_[k].is(Stage::Robustness); });  // short
         first.insert(first.end(), rest.begin(), rest.end());
         return first;
     }
@@ -231,32 +279,22 @@ private:
     // not a stub, failed or was not run; nullopt while it runs (worker.json is written last).
     std::optional<std::string> scoutNote(size_t scout) {
         if (auto known = scoutNote_.find(scout); known != scoutNote_.end()) return known->second;
-        nlohmann::json w;
-        try {
-            std::ifstream in(jobs_[scout].out / "worker.json");
-            if (!in) return jobs_[scout].ran ? std::optional<std::string>("") : std::nullopt;
-            w = nlohmann::json::parse(in);
-        } catch (const std::exception&) {
+        const Job& j = jobs_[scout];
+        const auto w = readWorkerResult(j.out);
+        if (!w) {
+            std::error_code ec;
+            if (!fs::exists(j.out / kWorkerResultFile, ec))
+                return j.ran ? std::optional<std::string>("") : std::nullopt;
             return std::nullopt;  // still being written: ask again at the next start
         }
-        const Job& j = jobs_[scout];
-        const auto notes = w.value("stubNotes", std::vector<std::string>{});
         std::string note;
-        if (j.stage == "robustness" ? !notes.empty() : w.value("stubEverywhere", false)) {
-            for (const auto& f : stageFiles(j.stage, ""))
-                note += (note.empty() ? "submission/" : " + ") + f;
+        if (j.is(Stage::Robustness) ? !w->stubNotes.empty() : w->stubEverywhere) {
+            for (const auto& f : j.row->files) note += (note.empty() ? "submission/" : " + ") + f;
             note += ": not implemented yet (its output is the stub value -1)";
-            for (const auto& n : notes)
-                if (n.find("submission/" + stageFiles(j.stage, "").front()) != std::string::npos) note = n;
+            for (const auto& n : w->stubNotes)
+                if (n.file == j.row->files.front()) note = n.text;
         }
         return scoutNote_[scout] = note;
-    }
-
-    // The stages whose submission files a job's render runs: a final runs the moments stage's,
-    // its scene's filter's and msm's; any other job its own stage's.
-    std::vector<std::string> stagesRun(const Job& job) const {
-        if (job.stage == "final") return {"moments", scenes_[job.scene].filter, "msm"};
-        return {job.stage};
     }
 
     // skipIf of job k: true (with the reason in notRunReason) if a scout showed a stage it
@@ -264,13 +302,15 @@ private:
     bool stubbedElsewhere(size_t k) {
         Job& job = jobs_[k];
         std::string reason;
-        for (const auto& stage : stagesRun(job)) {
-            const auto scout = scouts_.find(stage);
+        for (const StageRow* run : stagesRun(*job.row, scenes_[job.scene].filter)) {
+            if (!run->scoutedBy) continue;
+            const auto scout = scouts_.find(*run->scoutedBy);
             if (scout == scouts_.end() || scout->second == k) continue;
             const auto note = scoutNote(scout->second);
             if (!note || note->empty()) continue;
-            const GradedScene& seen = scenes_[jobs_[scout->second].scene];
-            const std::string where = stage == "msm" ? std::string("on every hard case")
+            const Job& seenBy = jobs_[scout->second];
+            const GradedScene& seen = scenes_[seenBy.scene];
+            const std::string where = seenBy.is(Stage::Robustness) ? std::string("on every hard case")
                                       : seen.hidden ? std::string("everywhere in another scene's render")
                                                     : "everywhere in the render of " + seen.name;
             reason += *note + "; " + where + "\n";
@@ -280,16 +320,15 @@ private:
         return true;
     }
 
-
-    std::map<std::string, size_t> scouts_;      // stage -> the job that speaks for it
+    std::map<Stage, size_t> scouts_;            // stage -> the job that speaks for it
     std::map<size_t, std::string> scoutNote_;   // finished scout -> its stub note, "" if none
     const bool timing_ = std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr;  // per-job times too
 
     // Files a stage's render compiles from the submission.
-    std::vector<std::string> neededFiles(const std::string& stage, const std::string& filter) const {
+    std::vector<std::string> neededFiles(const StageRow& row, const std::string& filter) const {
         // Without reference/, lighting takes relativeDepth from the submission's moments.glsl.
-        if (stage == "msm" && !haveRef_) return {"msm.glsl", "moments.glsl"};
-        return stageFiles(stage, filter);
+        if (row.stage == Stage::Msm && !haveRef_) return {"msm.glsl", "moments.glsl"};
+        return stageFiles(row, filter);
     }
 
     fs::path referenceFile(size_t scene, const std::string& image) const {
@@ -301,38 +340,6 @@ private:
         return goldenFolder(scenes_[scene], goldens_) / scenes_[scene].name / (image + ".exr");
     }
 
-    // Golden mode: each scene's golden EXRs decoded once, by a child process, into
-    // OUT/.work-<pid>/golden/<scene>/<image>.raw (the same floats), which the probe check, the
-    // scoring and the workers' inputs then read. Reading an EXR here would start OpenEXR's
-    // thread pool in this process, after which no worker can be forked (isolation.h): each was
-    // exec'd, and each that read a golden loaded the image codec again. An image that does not
-    // decode is read from its EXR as before (same messages).
-    void decodeGoldens() {
-        std::vector<ChildSpec> specs;
-        for (const auto& scene : scenes_) {
-            const fs::path from = goldenFolder(scene, goldens_) / scene.name;
-            const fs::path to = workDir(o_) / "golden" / scene.name;
-            fs::create_directories(to);
-            ChildSpec spec;
-            spec.logPath = to / "log.txt";
-            spec.run = [from, to] {
-                std::error_code ec;
-                for (const auto& f : fs::directory_iterator(from, ec)) {
-                    if (f.path().extension() != ".exr") continue;
-                    const fs::path raw = to / (f.path().stem().string() + ".raw");
-                    try {
-                        writeRaw(readAnyImage(f.path()), raw.string() + ".part");
-                        fs::rename(raw.string() + ".part", raw);
-                    } catch (const std::exception&) {
-                    }
-                }
-                return 0;
-            };
-            specs.push_back(spec);
-        }
-        runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs);
-    }
-
     // Runs the jobs at `which` (indices into jobs_), two at a time; scores as they end.
     void runPhase(const std::vector<size_t>& which) {
         std::vector<ChildSpec> specs;
@@ -341,16 +348,20 @@ private:
             Job& j = jobs_[k];
             if (!j.missing.empty()) continue;
             fs::create_directories(j.out);
-            const char* input = j.stage == "msm" ? "moments_filtered" : "moments_raw";
-            specs.push_back(workerSpec(o_, scenes_[j.scene], j.stage,
+            // The reference moments a stage reads; a render of the scene alone is handed
+            // moments_raw, which it does not read (the worker's arguments as they always were).
+            const char* input = j.row && *j.row->input ? j.row->input : "moments_raw";
+            specs.push_back(workerSpec(o_, scenes_[j.scene], j.row,
                                        referenceFile(j.scene, input), j.out));
             const double ref = refSeconds_.count(j.scene) ? refSeconds_.at(j.scene) : 0.0;
-            specs.back().timeoutSeconds = j.stage == "reference" ? referenceTimeout(o_) : stageTimeout(o_, ref);
-            specs.back().limitNote = j.stage == "reference" ? "" : timeoutNote(o_, ref);
-            if (j.stage != "reference") specs.back().skipIf = [this, k] { return stubbedElsewhere(k); };
+            specs.back().timeoutSeconds = j.reference() ? referenceTimeout(o_) : stageTimeout(o_, ref);
+            specs.back().limitNote = j.reference() ? "" : timeoutNote(o_, ref);
+            if (!j.reference()) specs.back().skipIf = [this, k] { return stubbedElsewhere(k); };
             // Once a stage whose files a final runs has timed out (it loops), the finals not
             // started yet would wait out their limits too.
-            if (j.stage == "final") specs.back().alsoRuns = stagesRun(j);
+            if (j.is(Stage::Final))
+                for (const StageRow* run : stagesRun(*j.row, scenes_[j.scene].filter))
+                    specs.back().alsoRuns.push_back(run->name);
             index.push_back(k);
         }
         // A scoring error fails the grade (results.json says why), once every child has ended.
@@ -361,11 +372,11 @@ private:
                                        j.child = r;
                                        j.ran = true;
                                        if (timing_)
-                                           std::cerr << "grade: " << j.stage << " "
-                                                     << testScene(j.stage, scenes_[j.scene]) << ": "
+                                           std::cerr << "grade: " << jobName(j) << " "
+                                                     << testScene(j.row, scenes_[j.scene]) << ": "
                                                      << (r.notRun ? "not run (a stub)" : std::to_string(r.seconds) + " s")
                                                      << "\n";
-                                       if (j.stage == "reference" || failed) return;
+                                       if (j.reference() || failed) return;
                                        try {
                                            scoreReady();
                                        } catch (...) {
@@ -376,11 +387,9 @@ private:
         if (failed) std::rethrow_exception(failed);
         for (size_t k = 0; k < results.size(); ++k) {
             Job& j = jobs_[index[k]];
-            if (j.stage == "reference") refSeconds_[j.scene] = j.child.seconds;
-            if (running_.is_null() && j.child.kind == ChildResult::Exited && j.child.exitCode == 0) {
-                std::ifstream in(j.out / "worker.json");
-                try { running_ = nlohmann::json::parse(in); } catch (...) {}
-            }
+            if (j.reference()) refSeconds_[j.scene] = j.child.seconds;
+            if (running_.is_null() && j.child.kind == ChildResult::Exited && j.child.exitCode == 0)
+                if (const auto w = readWorkerResult(j.out)) running_ = w->toJson();
         }
     }
 
@@ -389,7 +398,7 @@ private:
     void scoreReady() {
         for (; scored_ < jobs_.size(); ++scored_) {
             const Job& j = jobs_[scored_];
-            if (j.stage == "reference" || j.dropped) continue;
+            if (j.reference() || j.dropped) continue;
             if (!j.ran && j.missing.empty()) return;
             tests_.push_back(score(j, report_.get()));
         }
@@ -398,7 +407,7 @@ private:
     // The test of a finished render (score_render.h); `fraction` holds its share of the
     // points (assignPoints scales it).
     TestResult score(const Job& job, ReportWriter* report) {
-        const RenderToScore render{job.stage, scenes_[job.scene], job.out, job.missing, job.child,
+        const RenderToScore render{*job.row, scenes_[job.scene], job.out, job.missing, job.child,
                                    job.notRunReason};
         return scoreRender(render, o_, rubric_,
                            [&](const std::string& image) { return referenceFile(job.scene, image); }, report,
@@ -412,6 +421,7 @@ private:
     bool haveRef_ = false;
     std::string mode_;
     fs::path goldens_;
+    std::string ignoredWarning_;  // the submission's other files, named
     nlohmann::json running_;  // backend/renderer/Mesa of the workers
     std::map<size_t, double> refSeconds_;  // scene -> its reference render's seconds
     TimedOutGroups timedOut_;  // stage -> its first timeout, over every phase of stage renders
@@ -446,12 +456,14 @@ GradeSummary gradeSubmission(const GradeOptions& o) {
     } catch (const std::exception& e) {
         s = {};
         s.failed = true;
+        s.failure = e.what();
         s.warnings.push_back(std::string("grader failed: ") + e.what());
         s.seconds = seconds();
         writeFailureResults(results, e.what(), s.seconds);
     } catch (...) {
         s = {};
         s.failed = true;
+        s.failure = "unknown error";
         s.warnings.push_back("grader failed: unknown error");
         writeFailureResults(results, "unknown error", seconds());
     }

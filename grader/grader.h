@@ -1,10 +1,12 @@
-// grader.h: the types the grader's files share — stages, options, one render job's outcome and
-// one scored test. The concepts live in their own files: stages, scene_list, intake,
-// isolation (child processes), worker (what a child renders), raw_image, metrics, rubric,
-// golden, results, report, jobs, grade (one submission), batch, package, cli_grade (docs/grading.md).
+// grader.h: the types the grader's files share: a grade's options, one scored test, a grade's
+// summary and a batch's row of it. The concepts live in their own files, one folder per part:
+// intake/ (intake, out_guard, isolation, worker, jobs, raw_image), scoring/ (stages, rubric,
+// points, metrics, score_render), output/ (results, report, report_diagnosis), goldens/,
+// packaging/, batch/; grade.cpp grades one submission (docs/grading.md).
 #pragma once
 
 #include "image.h"
+#include "stages.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,16 +19,6 @@ namespace sl::grader {
 
 namespace fs = std::filesystem;
 
-// The graded stages, in report order. Each is scored on reference inputs except `final`.
-// robustness: msm.glsl on the hard-case catalogue (framework/numerics/msm_robustness.h), one test.
-const std::vector<std::string>& stageNames();  // moments, gaussian, sat, msm, robustness, final
-// The submission files a stage compiles (final: the files the scene's pipeline uses).
-std::vector<std::string> stageFiles(const std::string& stage, const std::string& filter);
-// Whether `stage` applies to a scene with this filter ("gaussian" | "sat" | "none").
-bool stageApplies(const std::string& stage, const std::string& filter);
-// The image names a stage produces and is compared on (before light/camera suffixes).
-std::string stageImage(const std::string& stage);  // moments_raw, moments_filtered, shadow, final
-
 struct GradeOptions {
     fs::path submission;          // folder of stage files
     fs::path out;                 // results.json, report/, .work-<pid>/ (scratch)
@@ -38,18 +30,14 @@ struct GradeOptions {
     fs::path goldens;             // default: scenes/goldens
     fs::path rubric;              // default: grader/rubric.json
     bool report = true;           // write OUT/report
-    bool quiet = false;           // no table on stdout
     std::string backend = "auto";
     bool keepWork = false;        // keep OUT/.work (the workers' images and logs)
     fs::path referenceImages;     // live mode: reference renders made already (batch)
-};
+    fs::path rowFile;             // batch: where gradeAndPrint writes the submission's BatchRow
 
-// What one child process did.
-struct JobOutcome {
-    enum Kind { Ok, TimedOut, ShaderFailed, Crashed, Failed, NotRun } kind = NotRun;
-    std::string message;     // for the student: reason, with file:line for shader errors
-    double seconds = 0.0;
-    nlohmann::json worker;   // the worker's worker.json (images written, stub notes)
+    // The one encoding of the options across a process boundary (a batch's exec'd child).
+    nlohmann::json toJson() const;
+    static GradeOptions fromJson(const nlohmann::json& j);  // throws std::invalid_argument
 };
 
 // One Gradescope test: a (scene, stage) pair.
@@ -77,6 +65,18 @@ struct GradeSummary {
     // printed under the score table too.
     std::vector<std::string> findings;
     bool failed = false;                // the grader itself failed (results.json says why)
+    std::string failure;                // then: why
+};
+
+// What scores.csv shows of one submission, handed from its grade to the batch as data.
+struct BatchRow {
+    bool failed = false;
+    double score = 0.0, maxScore = 0.0;
+    std::map<std::string, double> stagePoints;  // stage -> points earned
+    std::vector<std::string> notes;              // the visible warnings, or why it failed
+
+    nlohmann::json toJson() const;
+    static BatchRow fromJson(const nlohmann::json& j);
 };
 
 // "live" or "golden" for --reference live|golden|auto (auto: live if reference/ is complete).

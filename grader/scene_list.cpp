@@ -15,9 +15,9 @@ namespace {
 namespace fs = std::filesystem;
 
 bool loadGraded(const fs::path& path, GradedScene& out) {
-    Scene scene = loadScene(path.string());
-    if (planPasses(scene).shadowLights.empty()) return false;
-    out = {scene.name, path, toString(scene.shadow.filter)};
+    auto scene = std::make_shared<const Scene>(loadScene(path.string()));
+    if (planPasses(*scene).shadowLights.empty()) return false;
+    out = {scene->name, path, toString(scene->shadow.filter), false, scene};
     return true;
 }
 

@@ -1,18 +1,23 @@
 // scene_list.h: which scenes are graded, and which of them are hidden.
 #pragma once
 
+#include "scene.h"
+
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sl::grader {
 
+// A graded scene, parsed once here: the grade, its scoring and the golden checks read `scene`.
 struct GradedScene {
     std::string name;
     std::filesystem::path path;
     std::string filter;  // "gaussian" | "sat" | "none"
     bool hidden = false;  // not a scene students have (isHiddenScenePath)
+    std::shared_ptr<const Scene> scene;
 };
 
 // The public scenes (scenes/*.json under the repository root) that have a shadowing light,

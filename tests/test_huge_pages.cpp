@@ -1,4 +1,4 @@
-// Huge pages (framework/cli/huge_pages.h): the commands that render re-execute themselves with
+// Huge pages (cli/huge_pages.h): the commands that render re-execute themselves with
 // glibc's malloc asking for transparent huge pages where the kernel offers them on request
 // (`madvise`), the switch SHADOWLAB_HUGE_PAGES=0 turns that off, a query does not re-execute,
 // and the images do not change with huge pages.

@@ -1,5 +1,5 @@
 // The grader forks its workers without exec only while no thread could hold a lock a worker
-// needs (grader/isolation.h). Loading the image codec starts log4cplus's idle pool; loaded
+// needs (grader/intake/isolation.h). Loading the image codec starts log4cplus's idle pool; loaded
 // through loadBeforeForking, those threads count as idle and workers are still forked.
 #include "gl_test_support.h"
 #include "image_codec.h"

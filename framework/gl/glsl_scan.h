@@ -31,7 +31,6 @@ struct Directive {
 class LineScanner {
 public:
     std::optional<Directive> scan(std::string_view line);
-    bool inBlockComment() const { return inBlock_; }
 
 private:
     bool inBlock_ = false;

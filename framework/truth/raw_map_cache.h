@@ -33,7 +33,6 @@ public:
     void done(const std::string& digest);
 
     int kept() const { return kept_; }        // maps rendered and kept for later rows
-    size_t held() const { return maps_.size(); }  // maps held now
 
 private:
     std::map<std::string, int> remaining_;

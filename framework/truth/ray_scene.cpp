@@ -56,7 +56,6 @@ RayScene::RayScene(const Scene& scene) : impl_(std::make_unique<Impl>()) {
         rtcCommitGeometry(geom);
         rtcAttachGeometry(impl_->scene, geom);
         rtcReleaseGeometry(geom);
-        triangles_ += mesh.indices.size() / 3;
     }
     rtcCommitScene(impl_->scene);
     if (!all.empty()) diagonal_ = glm::length(all.hi - all.lo);

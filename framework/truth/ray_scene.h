@@ -23,13 +23,11 @@ public:
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float tnear,
                   float tfar) const;
 
-    size_t triangleCount() const { return triangles_; }
     float sceneDiagonal() const { return diagonal_; }  // of the casters' bounds, world units
 
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
-    size_t triangles_ = 0;
     float diagonal_ = 1.0f;
 };
 

@@ -14,8 +14,8 @@
 
 #include "grader.h"
 
-#include "cli_exit_codes.h"
 #include "depth_ladder.h"
+#include "exit_codes.h"
 #include "gl_context.h"
 #include "msm_robustness.h"
 #include "pass_plan.h"
@@ -40,15 +40,84 @@ ShaderLibrary makeLibrary(const WorkerArgs& a) {
     const fs::path sub = a.submission;
     const fs::path other = a.reference.empty() ? sub : fs::path(a.reference);
     std::map<std::string, fs::path> mine;
-    if (a.stage == "final")
+    if (a.stage && a.stage->stage == Stage::Final)
         for (const auto& name : stageFileNames()) mine[name] = sub;
-    else if (a.stage != "reference")
-        for (const auto& name : stageFiles(a.stage, "")) mine[name] = sub;
+    else if (a.stage)
+        for (const auto& name : a.stage->files) mine[name] = sub;
     // Student paths show as "submission/msm.glsl:42".
     return ShaderLibrary::mixed(other, mine, repoRoot(), sub.parent_path());
 }
 
+bool is(const WorkerArgs& a, Stage stage) { return a.stage && a.stage->stage == stage; }
+
+// The submission's stage file a stub note names ("" if none): notes begin with the file's
+// display path, "submission/<file>: ".
+StubNote stubNote(const std::string& text) {
+    for (const auto& f : stageFileNames())
+        if (text.rfind("submission/" + f + ":", 0) == 0) return {f, text};
+    return {"", text};
+}
+
 }  // namespace
+
+nlohmann::json WorkerArgs::toJson() const {
+    return {{"scene", scene},   {"stage", stage ? stage->name : "reference"},
+            {"submission", submission}, {"reference", reference},
+            {"input", input},   {"out", out}, {"backend", backend}};
+}
+
+WorkerArgs WorkerArgs::fromJson(const nlohmann::json& j) {
+    WorkerArgs a;
+    auto text = [&j](const char* key) {
+        if (!j.is_object() || !j.contains(key) || !j[key].is_string())
+            throw std::invalid_argument(std::string("worker arguments: no text \"") + key + "\"");
+        return j[key].get<std::string>();
+    };
+    a.scene = text("scene");
+    const std::string stage = text("stage");
+    a.stage = stage == "reference" ? nullptr : &stageRow(stage);
+    a.submission = text("submission");
+    a.reference = text("reference");
+    a.input = text("input");
+    a.out = text("out");
+    a.backend = text("backend");
+    return a;
+}
+
+nlohmann::json WorkerResult::toJson() const {
+    nlohmann::json notes = nlohmann::json::array();
+    for (const auto& n : stubNotes) notes.push_back({{"file", n.file}, {"text", n.text}});
+    nlohmann::json j = {{"stage", stage},         {"scene", scene},     {"stubEverywhere", stubEverywhere},
+                        {"images", images},       {"stubNotes", notes}, {"backend", backend},
+                        {"renderer", renderer},   {"mesaVersion", mesaVersion}};
+    if (!robustness.is_null()) j["robustness"] = robustness;
+    return j;
+}
+
+WorkerResult WorkerResult::fromJson(const nlohmann::json& j) {
+    WorkerResult r;
+    r.stage = j.value("stage", "");
+    r.scene = j.value("scene", "");
+    r.stubEverywhere = j.value("stubEverywhere", false);
+    r.images = j.value("images", std::vector<std::string>{});
+    for (const auto& n : j.value("stubNotes", nlohmann::json::array()))
+        r.stubNotes.push_back({n.value("file", ""), n.value("text", "")});
+    r.robustness = j.value("robustness", nlohmann::json());
+    r.backend = j.value("backend", "");
+    r.renderer = j.value("renderer", "");
+    r.mesaVersion = j.value("mesaVersion", "");
+    return r;
+}
+
+std::optional<WorkerResult> readWorkerResult(const fs::path& folder) {
+    std::ifstream in(folder / kWorkerResultFile);
+    if (!in) return std::nullopt;
+    try {
+        return WorkerResult::fromJson(nlohmann::json::parse(in));
+    } catch (const std::exception&) {
+        return std::nullopt;  // still being written
+    }
+}
 
 RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered) {
     scene.shadow.filter = FilterKind::None;
@@ -60,11 +129,16 @@ RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& fil
 
 void runWorker(const WorkerArgs& a) {
     // Test hook (tests/test_grader_limits.cpp): make this stage's worker crash.
-    if (const char* fault = std::getenv("SHADOWLAB_GRADER_FAULT"); fault && a.stage == fault)
+    const std::string stageName = a.stage ? a.stage->name : "reference";
+    if (const char* fault = std::getenv("SHADOWLAB_GRADER_FAULT"); fault && stageName == fault)
         std::raise(SIGSEGV);
     Scene scene = loadScene(a.scene);
     auto context = createContext(parseBackendKind(a.backend));
-    if (a.stage == "robustness") {
+    WorkerResult out;
+    out.stage = stageName;
+    const ContextInfo& info = context->info();
+    out.backend = info.backend, out.renderer = info.renderer, out.mesaVersion = info.mesaVersion;
+    if (is(a, Stage::Robustness)) {
         // The catalogue with the reference's α; the scene only names the GL settings.
         RobustnessReport report = probeMsmRobustness(makeLibrary(a));
         bool stub = !report.cases.empty();
@@ -78,28 +152,21 @@ void runWorker(const WorkerArgs& a) {
                                    {"G", std::isfinite(c.G) ? nlohmann::json(c.G) : nlohmann::json(std::to_string(c.G))},
                                    {"problems", c.problems()}});
         fs::create_directories(a.out);
-        const ContextInfo& info = context->info();
-        nlohmann::json j = {{"stage", a.stage},
-                            {"images", nlohmann::json::array()},
-                            {"stubNotes", stub ? std::vector<std::string>{"submission/msm.glsl: "
-                                                 "momentShadowIntensity: not implemented yet "
-                                                 "(it returns the stub value -1)"}
-                                               : std::vector<std::string>{}},
-                            {"robustness", {{"score", report.score},
-                                            {"cases", report.cases.size()},
-                                            {"failed", report.failed},
-                                            {"failing", failing},
-                                            {"summary", report.summary(20)}}},
-                            {"backend", info.backend},
-                            {"renderer", info.renderer},
-                            {"mesaVersion", info.mesaVersion}};
-        std::ofstream(fs::path(a.out) / "worker.json") << j.dump(2) << "\n";
+        if (stub)
+            out.stubNotes.push_back(stubNote("submission/msm.glsl: momentShadowIntensity: not "
+                                             "implemented yet (it returns the stub value -1)"));
+        out.robustness = {{"score", report.score},
+                          {"cases", report.cases.size()},
+                          {"failed", report.failed},
+                          {"failing", failing},
+                          {"summary", report.summary(20)}};
+        std::ofstream(fs::path(a.out) / kWorkerResultFile) << out.toJson().dump(2) << "\n";
         return;
     }
     Renderer renderer(makeLibrary(a));
     RenderResult result;
     std::vector<std::string> wanted;
-    if (a.stage == "gaussian" || a.stage == "sat") {
+    if (is(a, Stage::Gaussian) || is(a, Stage::Sat)) {
         // The building blocks on the reference moments; first shadowing light only.
         Image input = readAnyImage(a.input);
         Texture src = Texture::create(input.width, input.height, GL_RGBA32F);
@@ -107,7 +174,7 @@ void runWorker(const WorkerArgs& a) {
         Texture dst = Texture::create(input.width, input.height, GL_RGBA32F);
         src.upload(input);
         const ShadowEffect& fx = scene.shadow;
-        if (a.stage == "gaussian") {
+        if (is(a, Stage::Gaussian)) {
             renderer.gaussianPass(src, scratch, fx.gaussianRadius, fx.gaussianSigma, {1, 0});
             renderer.gaussianPass(scratch, dst, fx.gaussianRadius, fx.gaussianSigma, {0, 1});
         } else {
@@ -118,13 +185,13 @@ void runWorker(const WorkerArgs& a) {
         }
         gl::Finish();
         result.images["moments_filtered"] = dst.read();
-    } else if (a.stage == "msm") {
+    } else if (is(a, Stage::Msm)) {
         // Lighting only, from the reference's filtered moments (a file: isolated with the
         // goldens alone), sampled bilinearly whatever the scene's filter.
         result = renderFromMoments(renderer, scene, readAnyImage(a.input));
     } else {
         PassPlan plan;
-        if (a.stage == "moments") {
+        if (is(a, Stage::Moments)) {
             // Only the shadow passes: nothing else compiles, so only moments.glsl can fail.
             scene.shadow.filter = FilterKind::None;
             plan = planPasses(scene);
@@ -136,10 +203,10 @@ void runWorker(const WorkerArgs& a) {
             plan = planPasses(scene, {.resolveSat = true});
         }
         result = renderer.render(scene, plan);
-        if (a.stage == "moments")  // relativeDepth outside [near, far] too (depth_ladder.h)
+        if (is(a, Stage::Moments))  // relativeDepth outside [near, far] too (depth_ladder.h)
             result.images[kDepthLadderImage] =
                 depthLadderImage(probeMoments(makeLibrary(a), relativeDepthLadder()));
-        if (a.stage == "reference") {
+        if (!a.stage) {
             // What the msm stage is compared with: the same lighting-only render, from these
             // filtered moments, saved as "msm_<image>".
             RenderResult isolated =
@@ -148,55 +215,33 @@ void runWorker(const WorkerArgs& a) {
                 if (name.rfind("shadow", 0) == 0) result.images["msm_" + name] = std::move(image);
         }
     }
-    const std::string prefix = a.stage == "reference" ? "" : stageImage(a.stage);
+    const std::string prefix = a.stage ? a.stage->image : "";
     fs::create_directories(a.out);
-    nlohmann::json written = nlohmann::json::array();
     for (const auto& [name, image] : result.images) {
         if (name.rfind("sat", 0) == 0) continue;  // the table itself is never compared
         if (!prefix.empty() && name.rfind(prefix, 0) != 0) continue;
         writeRaw(image, fs::path(a.out) / (name + ".raw"));
-        written.push_back(name);
+        out.images.push_back(name);
     }
     // The stage is the stub everywhere (the grader then skips its renders of the other scenes,
     // grade.cpp): a filter's whole output is -1; computeMoments gave -1 on every rung of the
     // depth ladder (the map's background keeps its clear value, so the map cannot tell).
-    bool stubEverywhere = false;
-    const std::string shown = a.stage == "moments" ? kDepthLadderImage : stageImage(a.stage);
-    if (a.stage == "moments" || a.stage == "gaussian" || a.stage == "sat")
+    if (a.stage && a.stage->scoutedBy == a.stage->stage) {
+        const std::string shown = is(a, Stage::Moments) ? kDepthLadderImage : a.stage->image;
         if (auto it = result.images.find(shown); it != result.images.end())
-            stubEverywhere = it->second.allStub();
-    const ContextInfo& info = context->info();
-    nlohmann::json j = {{"stage", a.stage},
-                        {"scene", scene.name},
-                        {"stubEverywhere", stubEverywhere},
-                        {"images", written},
-                        {"stubNotes", result.stubNotes},
-                        {"backend", info.backend},
-                        {"renderer", info.renderer},
-                        {"mesaVersion", info.mesaVersion}};
-    std::ofstream(fs::path(a.out) / "worker.json") << j.dump(2) << "\n";
+            out.stubEverywhere = it->second.allStub();
+    }
+    out.scene = scene.name;
+    for (const auto& n : result.stubNotes) out.stubNotes.push_back(stubNote(n));
+    std::ofstream(fs::path(a.out) / kWorkerResultFile) << out.toJson().dump(2) << "\n";
 }
 
 int workerMain(const WorkerArgs& a) {
-    // The same messages and codes as main() gives an exec'd grade-worker (framework/cli/main.cpp).
     try {
         runWorker(a);
-        return cli::Ok;
-    } catch (const SceneError& e) {
-        std::cerr << "scene error: " << e.what() << "\n";
-        return cli::BadInput;
-    } catch (const ShaderError& e) {
-        std::cerr << "shader error:\n" << e.what() << "\n";
-        return cli::ShaderFailed;
-    } catch (const BackendError& e) {
-        std::cerr << "no OpenGL: " << e.what() << "\n";
-        return cli::NoBackend;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return cli::Failed;
+        return Ok;
     } catch (...) {
-        std::cerr << "error: unknown\n";
-        return cli::Failed;
+        return reportError(std::current_exception(), std::cerr);
     }
 }
 

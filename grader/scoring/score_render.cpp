@@ -8,6 +8,7 @@
 #include "results.h"
 #include "scene.h"
 #include "shader_source.h"
+#include "worker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -40,31 +41,33 @@ std::string worstTexelText(const std::string& image, const Comparison& c) {
 // The stage's comparison under the rubric's tolerances: moments and filtered moments per
 // channel (the SAT with an allowance for its table's rounding), msm's G and final's colour.
 Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Image& mine, const Image& ref) {
-    if (job.stage == "msm") return compareImages(mine, ref, rubric.shadowTol);
-    if (job.stage == "final") return compareImages(mine, ref, rubric.finalTol);
+    const CompareBy by = job.stage.compareBy;
+    if (by == CompareBy::Shadow) return compareImages(mine, ref, rubric.shadowTol);
+    if (by == CompareBy::Colour) return compareImages(mine, ref, rubric.finalTol);
     std::vector<double> extra;
-    if (job.stage == "sat" && rubric.satRounding > 0) {
+    if (job.stage.stage == Stage::Sat && rubric.satRounding > 0) {
         // A float32 table's rounding grows with its entries (up to the sum of the whole
         // map), and a correct table summed in another order rounds differently: allow
         // satRounding ulps of the total, spread over the box.
-        Scene scene = loadScene(job.scene.path.string());
+        const Scene& scene = *job.scene.scene;
         const double area = double(scene.shadow.satKernelTexels) * scene.shadow.satKernelTexels;
         extra.assign(ref.channels, 0.0);
         for (size_t i = 0; i < ref.pixels.size(); ++i)
             extra[i % ref.channels] += std::fabs(ref.pixels[i]);
         for (double& e : extra) e = rubric.satRounding * std::ldexp(e, -24) / area;
     }
-    if (job.stage == "moments")
+    if (by == CompareBy::Moments)
         return compareMoments(mine, ref, rubric.momentsAbs, rubric.momentsRel);
     return compareMoments(mine, ref, rubric.filterAbs, rubric.filterRel, extra);
 }
 
 // The hard-case catalogue: the fraction of cases with no NaN, Inf, out-of-range,
 // non-monotone or off-bound G (docs/numerics.md), and the failing cases with their inputs.
-TestResult scoreRobustness(TestResult t, const nlohmann::json& worker, const Rubric& rubric) {
-    const auto& r = worker["robustness"];
+TestResult scoreRobustness(TestResult t, const WorkerResult& worker, const Rubric& rubric) {
+    const auto& r = worker.robustness;
     const double fraction = r.value("score", 0.0);
-    const auto notes = worker.value("stubNotes", std::vector<std::string>{});
+    std::vector<std::string> notes;
+    for (const auto& n : worker.stubNotes) notes.push_back(n.text);
     t.fraction = notes.empty() ? rubric.points("robustness", fraction, 1.0) : 0.0;
     t.metrics["robustness"] = r;
     const auto [pass, zero] = rubric.ramp("robustness");
@@ -78,8 +81,8 @@ TestResult scoreRobustness(TestResult t, const nlohmann::json& worker, const Rub
 
 }  // namespace
 
-std::string testScene(const std::string& stage, const GradedScene& scene) {
-    return stage == "robustness" ? "hard cases" : scene.name;
+std::string testScene(const StageRow* stage, const GradedScene& scene) {
+    return stage && !stage->perScene ? "hard cases" : scene.name;
 }
 
 // What the child's failure means for the student.
@@ -120,10 +123,10 @@ std::string failureText(const ChildResult& c, const GradeOptions& o) {
 TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, const Rubric& rubric,
                        const std::function<fs::path(const std::string& image)>& referenceFile,
                        ReportWriter* report, std::vector<ImageFindings>* findings) {
-    const bool robustness = job.stage == "robustness";
+    const bool robustness = job.stage.compareBy == CompareBy::HardCases;
     TestResult t;
-    t.scene = testScene(job.stage, job.scene);  // one name, pass or fail
-    t.stage = job.stage;
+    t.scene = testScene(&job.stage, job.scene);  // one name, pass or fail
+    t.stage = job.stage.name;
     t.hidden = !robustness && job.scene.hidden;
     if (!job.missing.empty()) {
         t.output = job.missing;
@@ -137,24 +140,21 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         t.output = failureText(job.child, options);
         return t;
     }
-    nlohmann::json worker;
-    try {
-        std::ifstream in(job.out / "worker.json");
-        worker = nlohmann::json::parse(in);
-    } catch (const std::exception&) {
+    const std::optional<WorkerResult> worker = readWorkerResult(job.out);
+    if (!worker) {
         t.output = "the render left no result";
         return t;
     }
-    if (robustness) return scoreRobustness(t, worker, rubric);
+    if (robustness) return scoreRobustness(t, *worker, rubric);
     // Stub notes naming the submission's files of this stage: not implemented.
     std::string notes;
-    for (const auto& n : worker.value("stubNotes", std::vector<std::string>{}))
-        for (const auto& f : stageFiles(job.stage, job.scene.filter))
-            if (n.find("submission/" + f) != std::string::npos) notes += n + "\n";
+    const auto files = stageFiles(job.stage, job.scene.filter);
+    for (const auto& n : worker->stubNotes)
+        if (std::find(files.begin(), files.end(), n.file) != files.end()) notes += n.text + "\n";
 
-    const std::string prefix = stageImage(job.stage);
+    const std::string prefix = job.stage.image;
     std::vector<std::string> images;
-    for (const auto& name : worker.value("images", std::vector<std::string>{}))
+    for (const auto& name : worker->images)
         if (name.rfind(prefix, 0) == 0 && (prefix != "moments_filtered" || name == prefix))
             images.push_back(name);
     if (images.empty()) images.push_back(prefix);
@@ -169,7 +169,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
             // msm is compared with the reference lit from the same moments (msm_<image>);
             // the relativeDepth ladder with its exact moments.
             ref = ladder ? depthLadderExpected()
-                         : readAnyImage(referenceFile(job.stage == "msm" ? "msm_" + name : name));
+                         : readAnyImage(referenceFile(job.stage.stage == Stage::Msm ? "msm_" + name : name));
         } catch (const std::exception& e) {
             t.output = "no reference image " + name + " to compare with (" + e.what() + ")";
             return t;
@@ -188,7 +188,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         }
         Comparison c = compareStage(job, rubric, mine, ref);
         fraction = std::min(fraction, c.error.empty() ? c.fraction : 0.0);
-        if (auto cap = rubric.worstTexelCap.find(job.stage);
+        if (auto cap = rubric.worstTexelCap.find(job.stage.name);
             cap != rubric.worstTexelCap.end() && c.worst > rubric.worstTexelFactor)
             worstCap = std::min(worstCap, cap->second);
         t.metrics[name] = c.toJson();
@@ -210,8 +210,8 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         if (ladder) ladderFindings = f;
         if (findings) findings->push_back(f);
     }
-    t.fraction = notes.empty() ? std::min(rubric.points(job.stage, fraction, 1.0), worstCap) : 0.0;
-    const auto [pass, zero] = rubric.ramp(job.stage);
+    t.fraction = notes.empty() ? std::min(rubric.points(job.stage.name, fraction, 1.0), worstCap) : 0.0;
+    const auto [pass, zero] = rubric.ramp(job.stage.name);
     std::string head;
     if (!notes.empty()) head = "not implemented: " + notes;
     else if (t.fraction >= 1.0) head = "full marks\n";

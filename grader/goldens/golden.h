@@ -44,7 +44,6 @@ struct GoldenRun {
 // A manifest is merged: entries of scenes not rendered this time are kept (and listed in
 // `messages`), never dropped. With `check`, writes nothing and lists what differs.
 GoldenRun runGoldens(const GoldenOptions& options);
-std::vector<std::string> makeGoldens(const GoldenOptions& options);  // runGoldens(...).stale
 
 // The folder that holds a scene's goldens: `publicGoldens` for a public scene, else
 // goldens/ next to the hidden scene's file.
@@ -58,8 +57,6 @@ fs::path goldenFolder(const GradedScene& scene, const fs::path& publicGoldens);
 void checkReferenceProbes(const std::vector<GradedScene>& scenes,
                           const std::function<fs::path(size_t, const std::string&)>& file);
 
-// Reads one golden image ("" if absent).
-Image readGolden(const fs::path& goldens, const std::string& scene, const std::string& image);
 nlohmann::json readManifest(const fs::path& goldens);  // null if absent
 
 // Messages for each way the running renderer differs from the manifest's.

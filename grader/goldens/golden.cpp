@@ -105,7 +105,7 @@ void renderLadderStandIns(const Scene& full, Renderer& renderer, const fs::path&
 nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, const fs::path& dir,
                            const ContextInfo& info, std::vector<std::string>& probeErrors,
                            bool standIns) {
-    Scene scene = loadScene(gs.path.string());
+    const Scene& scene = *gs.scene;
     Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
     RenderResult result = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
     const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
@@ -262,16 +262,12 @@ GoldenRun runGoldens(const GoldenOptions& o) {
     return run;
 }
 
-std::vector<std::string> makeGoldens(const GoldenOptions& options) {
-    return runGoldens(options).stale;
-}
-
 void checkReferenceProbes(const std::vector<GradedScene>& scenes,
                           const std::function<fs::path(size_t, const std::string&)>& file) {
     std::vector<std::string> errors;
     int hidden = 0;
     for (size_t i = 0; i < scenes.size(); ++i) {
-        const Scene scene = loadScene(scenes[i].path.string());
+        const Scene& scene = *scenes[i].scene;
         std::map<std::string, Image> images;
         bool missing = false;
         for (const ShadowProbe& p : scene.probes) {
@@ -295,12 +291,6 @@ void checkReferenceProbes(const std::vector<GradedScene>& scenes,
     if (!errors.empty())
         throw std::runtime_error("the reference does not match the scenes' probes, so the scenes "
                                  "(or their probes) are wrong:\n" + joined(errors, "\n"));
-}
-
-Image readGolden(const fs::path& goldens, const std::string& scene, const std::string& image) {
-    const fs::path file = goldens / scene / (image + ".exr");
-    if (!fs::exists(file)) return {};
-    return readImage(file);
 }
 
 nlohmann::json readManifest(const fs::path& goldens) {

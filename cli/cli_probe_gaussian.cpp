@@ -3,7 +3,7 @@
 // blur computed in double (gaussian_exact.h), with the worst error of each map.
 #include "cli_probe.h"
 
-#include "cli_exit_codes.h"
+#include "exit_codes.h"
 #include "gaussian_cases.h"
 #include "gaussian_exact.h"
 #include "gl_context.h"

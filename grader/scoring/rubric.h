@@ -10,22 +10,24 @@
 
 namespace sl::grader {
 
+// Every value comes from a rubric file: defaultRubric() is grader/rubric.json as it was when
+// the program was built (one source for the defaults), and a rubric file overrides it key by key.
 struct Rubric {
-    double total = 100.0;
+    double total = 0.0;
     std::map<std::string, double> weights;  // stage -> points (before normalising to total)
-    double passFraction = 0.995;  // at or above: full points
-    double zeroFraction = 0.90;   // at or below: none; linear in between
+    double passFraction = 0.0;  // at or above: full points
+    double zeroFraction = 0.0;  // at or below: none; linear in between
     // moments stage (and the relativeDepth ladder); gaussian and sat ("filter"): tolerances
     // derived from the spread of correct variants (docs/grading.md).
-    double momentsAbs = 1e-4, momentsRel = 1e-3, satRounding = 0.0;
-    double filterAbs = 1e-4, filterRel = 1e-3;
-    double shadowTol = 0.02, finalTol = 0.02;
-    std::string visibility = "visible";
-    std::string hiddenVisibility = "after_due_date";
+    double momentsAbs = 0.0, momentsRel = 0.0, satRounding = 0.0;
+    double filterAbs = 0.0, filterRel = 0.0;
+    double shadowTol = 0.0, finalTol = 0.0;
+    std::string visibility;
+    std::string hiddenVisibility;
     // "both": the gaussian and sat stages are graded on the scenes that use them (default);
     // "either": their points are pooled and go to the filter the submission implements
     // (the better one when it has both): the course handout lets students choose.
-    std::string filters = "both";
+    std::string filters;
 
     // Per-stage ramps that replace the two above (final: see docs/grading.md).
     std::map<std::string, std::pair<double, double>> stageRamp;  // stage -> (pass, zero)
@@ -33,7 +35,7 @@ struct Rubric {
     // Worst-texel rule (moment-map stages): a texel off by more than worstTexelFactor times
     // its tolerance caps the test at worstTexelCap[stage] of its points, however few texels
     // are off: a border or edge bug touches few texels but is a bug (docs/grading.md).
-    double worstTexelFactor = 5.0;
+    double worstTexelFactor = 0.0;
     std::map<std::string, double> worstTexelCap;  // stage -> cap; absent: no cap
 
     // Points for a stage's pass fraction, out of `max`.
@@ -47,7 +49,8 @@ struct Rubric {
     std::map<std::string, long> stageHundredths(const std::vector<std::string>& stages) const;
 };
 
-// The default rubric (the documented one, docs/grading.md).
+// The default rubric: grader/rubric.json built into the program (rubric_defaults.cpp.in), so a
+// kit without the file grades the same way.
 Rubric defaultRubric();
 
 // Reads the rubric; a missing file gives the documented defaults, a broken or invalid one

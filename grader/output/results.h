@@ -14,6 +14,9 @@ namespace sl::grader {
 // `v` with `digits` digits after the point ("12.50"): points, percentages and metrics in text.
 std::string fixedDigits(double v, int digits = 2);
 
+// Points as results.json writes them: to the hundredth.
+double round2(double v);
+
 nlohmann::json resultsJson(const GradeSummary& summary, const Rubric& rubric);
 
 // Writes `path` atomically (temp file + rename), so a reader never sees half a file.

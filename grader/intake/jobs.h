@@ -22,13 +22,10 @@ bool haveReference();  // reference/ holds all five stage files
 // Measured: a quarter of the shader-compile CPU. Empty when the folder cannot be made.
 std::vector<std::pair<std::string, std::string>> shaderCacheEnvironment(const GradeOptions& o);
 
-// `shadowlab grade-worker ...` for one (scene, stage), its images and log going to `out`.
-// The log is scrubbed of the grader's own paths (submission/, shaders/ ... stay).
-ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std::string& stage,
+// The worker for one (scene, stage) (stage nullptr: the reference render), its images and log
+// going to `out`. The log is scrubbed of the grader's own paths (submission/, shaders/ ... stay).
+ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const StageRow* stage,
                      const fs::path& input, const fs::path& out);
-
-// Each scene once (`--scenes classic,classic`); two different files with one name: an error.
-std::vector<GradedScene> uniqueScenes(const std::vector<GradedScene>& scenes);
 
 // Time limits. With --timeout S: S for every render. Otherwise a render may take
 // kTimeoutFactor times the reference's own render of that scene on this machine, at the same
@@ -41,6 +38,14 @@ double stageTimeout(const GradeOptions& o, double referenceSeconds);
 // How stageTimeout chose: " (20 x the reference's 0.41 s render)", " (--timeout)" or "".
 std::string timeoutNote(const GradeOptions& o, double referenceSeconds);
 double referenceTimeout(const GradeOptions& o);  // a reference render's own limit
+
+// Golden mode: each scene's golden EXRs decoded once, by a child process, into
+// OUT/.work-<pid>/golden/<scene>/<image>.raw (the same floats), which the probe check, the
+// scoring and the workers' inputs then read. Reading an EXR in the grader would start OpenEXR's
+// thread pool there, after which no worker can be forked (isolation.h): each was exec'd, and
+// each that read a golden loaded the image codec again. An image that does not decode is read
+// from its EXR as before (same messages).
+void decodeGoldens(const GradeOptions& o, const std::vector<GradedScene>& scenes, const fs::path& goldens);
 
 // The reference renders' seconds per scene, kept next to them (REF/times.json) for a batch.
 std::map<std::string, double> readReferenceTimes(const fs::path& dir);

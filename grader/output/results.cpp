@@ -24,11 +24,7 @@ std::string fixedDigits(double v, int digits) {
     o << v;
     return o.str();
 }
-namespace {
-
 double round2(double v) { return std::round(v * 100.0) / 100.0; }
-
-}  // namespace
 
 std::map<std::string, std::pair<double, double>> stageTotals(const GradeSummary& s,
                                                                bool visibleOnly) {

@@ -3,7 +3,7 @@
 // against bounds that need no 4MSM solver; the summary on stdout, the failing cases to --out.
 #include "cli_probe.h"
 
-#include "cli_exit_codes.h"
+#include "exit_codes.h"
 #include "gl_context.h"
 #include "msm_sweep.h"
 #include "probe.h"

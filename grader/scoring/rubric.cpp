@@ -1,10 +1,10 @@
-// rubric: reads and validates grader/rubric.json. The defaults here are the documented ones
-// (docs/grading.md), so a kit without the file still grades the same way. Every key is
+// rubric: reads and validates grader/rubric.json. The defaults are the same file as built into
+// the program (rubric_defaults.cpp.in), so a kit without the file still grades the same way. Every key is
 // checked: a typo ("gausian") must not silently fall back to a default weight, and a value
 // Gradescope does not know ("after_due") must not reach results.json.
 #include "rubric.h"
 
-#include "grader.h"
+#include "stages.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,6 +16,9 @@
 #include <stdexcept>
 
 namespace sl::grader {
+
+extern const char* const kBuiltInRubricJson;  // rubric_defaults.cpp.in
+
 namespace {
 
 using json = nlohmann::json;
@@ -119,37 +122,11 @@ std::map<std::string, long> Rubric::stageHundredths(const std::vector<std::strin
     return out;
 }
 
-Rubric defaultRubric() {
-    Rubric r;
-    r.weights = {{"moments", 15}, {"gaussian", 20}, {"sat", 20}, {"msm", 20}, {"robustness", 5}, {"final", 20}};
-    // MSM is ill-conditioned on flat receivers, and end to end it amplifies the float32
-    // rounding of every stage before it: correct implementations disagree on ~1-2% of pixels
-    // there (docs/grading.md).
-    r.stageRamp["msm"] = {0.98, 0.85};
-    r.stageRamp["final"] = {0.98, 0.85};
-    // The filter stages filter the reference's own moments, so every correct variant of the
-    // family (docs/grading.md) has >= 99.999 % of the texels within tolerance and its worst
-    // texel within 1.01x of it; a border or edge bug touches < 0.5 % of the texels, but by
-    // 24x-131x the tolerance. Hence a steep ramp and the worst-texel cap (factor 5).
-    r.stageRamp["gaussian"] = {0.999, 0.99};
-    r.stageRamp["sat"] = {0.999, 0.99};
-    r.stageRamp["robustness"] = {1.0, 0.8};
-    r.worstTexelCap["gaussian"] = 0.5;
-    r.worstTexelCap["sat"] = 0.5;
-    return r;
-}
+namespace {
 
-Rubric loadRubric(const std::filesystem::path& path) {
-    Rubric r = defaultRubric();
-    std::ifstream in(path);
-    if (!in) return r;
-    json j;
-    try {
-        j = json::parse(in);
-    } catch (const std::exception& e) {
-        throw std::runtime_error(path.string() + ": invalid JSON: " + e.what());
-    }
-    const Checker c{path.string()};
+// Sets every key `j` holds, checked; `r` keeps its values for the keys it lacks.
+void applyRubric(Rubric& r, const json& j, const std::string& file) {
+    const Checker c{file};
     c.keys(j, "", {"total", "filters", "stages", "pass_fraction", "zero_fraction", "tolerances",
                    "visibility", "hidden_scene_visibility"});
     r.total = c.number(j, "", "total", r.total, 0.0, 1e6, true);
@@ -166,11 +143,14 @@ Rubric loadRubric(const std::filesystem::path& path) {
             const std::string p = "/stages/" + stage;
             c.keys(v, p, {"weight", "pass_fraction", "zero_fraction", "worst_texel_cap"});
             if (v.contains("worst_texel_cap")) {
-                if (stage != "moments" && stage != "gaussian" && stage != "sat")
+                const CompareBy by = stageRow(stage).compareBy;
+                if (by != CompareBy::Moments && by != CompareBy::Filtered)
                     c.fail(p + "/worst_texel_cap", "only the moment-map stages (moments, gaussian, sat) have one");
                 r.worstTexelCap[stage] = c.number(v, p, "worst_texel_cap", 1.0, 0.0, 1.0);
             }
             r.weights[stage] = c.number(v, p, "weight", r.weights[stage], 0.0, 1e6);
+            // A stage without a ramp of its own follows the global one, whichever file sets it.
+            if (!v.contains("pass_fraction") && !v.contains("zero_fraction")) continue;
             const auto [pass0, zero0] = r.ramp(stage);
             const double pass = c.number(v, p, "pass_fraction", pass0, 0.0, 1.0);
             const double zero = c.number(v, p, "zero_fraction", zero0, 0.0, 1.0);
@@ -198,6 +178,30 @@ Rubric loadRubric(const std::filesystem::path& path) {
     double weightSum = 0.0;
     for (const auto& [stage, w] : r.weights) weightSum += w;
     if (weightSum <= 0.0) c.fail("/stages", "expected at least one stage with a positive weight");
+}
+
+}  // namespace
+
+Rubric defaultRubric() {
+    static const Rubric built = [] {
+        Rubric r;
+        applyRubric(r, json::parse(kBuiltInRubricJson), "grader/rubric.json (built in)");
+        return r;
+    }();
+    return built;
+}
+
+Rubric loadRubric(const std::filesystem::path& path) {
+    Rubric r = defaultRubric();
+    std::ifstream in(path);
+    if (!in) return r;
+    json j;
+    try {
+        j = json::parse(in);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(path.string() + ": invalid JSON: " + e.what());
+    }
+    applyRubric(r, j, path.string());
     return r;
 }
 

@@ -2,6 +2,7 @@
 //   grade         grade one submission (--submission) or a folder of them (--batch)
 //   golden        (re)make or check the golden images
 //   package       the student kit (.tar.gz) or the Gradescope autograder (.zip)
+//   grade-submission  hidden: one submission of a batch, exec'd (batch.cpp); not for people
 //   grade-worker  hidden: one child process's render (worker.cpp); not for people
 #include "batch.h"
 #include "cli_commands.h"
@@ -111,20 +112,23 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
         ctx.exitCode = Ok;
     });
 
+    // Hidden: one submission of a batch, exec'd where a fork is not safe (batch.cpp).
+    auto* one = app.add_subcommand("grade-submission", "");
+    one->group("");
+    auto options = std::make_shared<std::string>();
+    one->add_option("--options", *options, "GradeOptions as JSON (grader.h)")->required();
+    one->callback([options, &ctx] {
+        ctx.exitCode = gradeAndPrint(GradeOptions::fromJson(nlohmann::json::parse(*options))) == 0 ? Ok : Failed;
+    });
+
     auto* worker = app.add_subcommand("grade-worker", "");
     worker->group("");  // hidden: the grader's child process
-    auto w = std::make_shared<WorkerArgs>();
-    worker->add_option("--scene", w->scene)->required();
-    worker->add_option("--stage", w->stage)->required();
-    worker->add_option("--submission", w->submission)->required();
-    worker->add_option("--reference", w->reference);
-    worker->add_option("--input", w->input);
-    worker->add_option("--out", w->out)->required();
-    worker->callback([w, &ctx] {
-        WorkerArgs a = *w;
+    auto job = std::make_shared<std::string>();
+    worker->add_option("--job", *job, "WorkerArgs as JSON (worker.h)")->required();
+    worker->callback([job, &ctx] {
+        WorkerArgs a = WorkerArgs::fromJson(nlohmann::json::parse(*job));
         a.backend = ctx.backend;
-        runWorker(a);
-        ctx.exitCode = Ok;
+        ctx.exitCode = workerMain(a);
     });
 }
 

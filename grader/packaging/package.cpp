@@ -58,7 +58,7 @@ exit 0  # a low score is not a failed autograder: results.json says everything
 // like stay out), everything below them.
 void copyTree(const fs::path& root, const fs::path& dest) {
     static const std::vector<std::string> kit = {"CMakeLists.txt", "CMakePresets.json", "README.md",
-                                                 "kit", "docs", "framework", "grader", "scenes",
+                                                 "kit", "docs", "cli", "framework", "grader", "scenes",
                                                  "shaders", "student", "tests", "reference"};
     fs::create_directories(dest);
     for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {

@@ -1,4 +1,4 @@
-// shadowlab: the command line. The subcommands live in cli_*.cpp and grader/cli_*.cpp; this
+// shadowlab: the command line. The subcommands live in cli_*.cpp (the grader's in cli_grade.cpp); this
 // file parses and turns every error into a message and an exit code (cli_commands.h). Global
 // options live here too: --backend is accepted before the subcommand and on every subcommand
 // that renders; the kit's root (paths.h) is reported by info and grade.
@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
         const std::string origin = sl::repoRootOrigin(), warning = sl::repoRootWarning();
         ::setenv("SHADOWLAB_ROOT", root.c_str(), 1);
         for (CLI::App* sub : app.get_subcommands()) {
-            if (sub->get_name() == "grade-worker") return;
+            if (sub->get_name() == "grade-worker" || sub->get_name() == "grade-submission") return;
             if (kSayRoot.count(sub->get_name()))
                 std::cout << "kit root: " << root.string() << " (from " << origin << ")\n";
         }
@@ -65,17 +65,7 @@ int main(int argc, char** argv) {
         return ctx.exitCode;
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
-    } catch (const sl::SceneError& e) {
-        std::cerr << "scene error: " << e.what() << "\n";
-        return sl::cli::BadInput;
-    } catch (const sl::ShaderError& e) {
-        std::cerr << "shader error:\n" << e.what() << "\n";
-        return sl::cli::ShaderFailed;
-    } catch (const sl::BackendError& e) {
-        std::cerr << "no OpenGL: " << e.what() << "\n";
-        return sl::cli::NoBackend;
-    } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        return sl::cli::Failed;
+    } catch (...) {
+        return sl::reportError(std::current_exception(), std::cerr);
     }
 }

@@ -1,8 +1,9 @@
-// cli_commands: how the shadowlab subcommands register themselves. Each file under cli/ (and
-// grader/cli_*.cpp) adds its subcommands; main.cpp parses and maps errors to exit codes.
+// cli_commands: how the shadowlab subcommands register themselves. Each file under cli/ adds its
+// subcommands (the framework's and the grader's alike); main.cpp parses and maps errors to exit
+// codes (exit_codes.h).
 #pragma once
 
-#include "cli_exit_codes.h"
+#include "exit_codes.h"
 
 #include <CLI/CLI.hpp>
 
@@ -21,6 +22,6 @@ void addViewCommand(CLI::App& app, Context& ctx);    // view (cli_view.cpp, GLFW
 void addProbeCommand(CLI::App& app, Context& ctx);    // probe (cli_probe.cpp)
 void addStudyCommands(CLI::App& app, Context& ctx);   // study, truth (cli_study.cpp)
 void addProjectCommand(CLI::App& app, Context& ctx);  // project (cli_project.cpp)
-void addGraderCommands(CLI::App& app, Context& ctx);  // grade, golden, package (grader/)
+void addGraderCommands(CLI::App& app, Context& ctx);  // grade, golden, package (cli_grade.cpp)
 
 }  // namespace sl::cli

@@ -40,32 +40,14 @@ std::string points(double v) {
     return buf;
 }
 
-// `shadowlab grade` for one submission, with the batch's options.
+// `shadowlab grade` for one submission, with the batch's options: forked, gradeAndPrint(o);
+// exec'd, the hidden `grade-submission` with the same options as JSON.
 ChildSpec gradeSpec(const GradeOptions& o, const fs::path& logPath) {
-    std::vector<std::string> a = {"--backend", o.backend, "grade",
-                                  "--submission", o.submission.string(),
-                                  "--out", o.out.string(),
-                                  "--reference", o.reference,
-                                  "--memory", std::to_string(o.memoryMb),
-                                  "-j", std::to_string(o.jobs)};
-    if (o.timeoutSeconds > 0) a.insert(a.end(), {"--timeout", std::to_string(o.timeoutSeconds)});
-    if (!o.scenes.empty()) {
-        std::string list;
-        for (const auto& s : o.scenes) list += (list.empty() ? "" : ",") + s;
-        a.insert(a.end(), {"--scenes", list});
-    }
-    if (!o.goldens.empty()) a.insert(a.end(), {"--goldens", o.goldens.string()});
-    if (!o.rubric.empty()) a.insert(a.end(), {"--rubric", o.rubric.string()});
-    if (!o.referenceImages.empty())
-        a.insert(a.end(), {"--reference-images", o.referenceImages.string()});
-    if (!o.report) a.push_back("--no-report");
-    if (o.keepWork) a.push_back("--keep-work");
     ChildSpec spec;
-    spec.args = a;
+    spec.args = {"--backend", o.backend, "grade-submission", "--options", o.toJson().dump()};
     spec.logPath = logPath;
     // Forked without exec where that is safe (isolation.h): the child inherits the driver and
-    // the image codec the batch has loaded, where an exec'd grade loads both again. The same
-    // options as the command line above, which is exec'd where a fork is not safe.
+    // the image codec the batch has loaded, where an exec'd grade loads both again.
     spec.run = [o] { return gradeAndPrint(o); };
     return spec;
 }
@@ -74,6 +56,7 @@ ChildSpec gradeSpec(const GradeOptions& o, const fs::path& logPath) {
 
 int gradeAndPrint(const GradeOptions& o) {
     const GradeSummary s = gradeSubmission(o);
+    if (!o.rowFile.empty()) std::ofstream(o.rowFile) << batchRow(s).toJson().dump() << "\n";
     if (!s.failed) printScoreTable(std::cout, s);
     std::cout << "results: " << (o.out / "results.json").string();
     if (o.report && !s.failed) std::cout << ", report: " << (o.out / "report" / "index.html").string();
@@ -82,34 +65,37 @@ int gradeAndPrint(const GradeOptions& o) {
     return s.failed ? 1 : 0;
 }
 
-GradeSummary summaryFromResults(const nlohmann::json& r) {
-    GradeSummary s;
-    if (!r.is_object()) return s;
-    s.score = r.value("score", 0.0);
-    for (const auto& t : r.value("tests", nlohmann::json::array())) {
-        TestResult x;
-        for (const auto& tag : t.value("tags", std::vector<std::string>{})) {
-            if (tag.rfind("stage:", 0) == 0) x.stage = tag.substr(6);
-            if (tag.rfind("scene:", 0) == 0) x.scene = tag.substr(6);
+BatchRow batchRow(const GradeSummary& s) {
+    BatchRow row;
+    row.failed = s.failed || s.tests.empty();
+    if (s.failed) {
+        // results.json's reason, its first line.
+        const std::string why = "The grader could not grade this submission: " + s.failure;
+        row.notes.push_back(why.substr(0, why.find('\n')));
+        return row;
+    }
+    // The points as results.json rounds them.
+    row.score = round2(s.score);
+    for (const auto& t : s.tests) {
+        row.maxScore += round2(t.maxScore);
+        row.stagePoints[t.stage] += round2(t.score);
+    }
+    // One line a note: a warning's first line, and later ones written as warnings of their own.
+    const VisibleSummary v = visibleSummary(s);
+    auto note = [&row](const std::string& warning) {
+        const std::string text = "warning: " + warning;
+        for (size_t at = 0; at < text.size();) {
+            size_t end = text.find('\n', at);
+            if (end == std::string::npos) end = text.size();
+            const std::string line = text.substr(at, end - at);
+            if (line.rfind("warning: ", 0) == 0) row.notes.push_back(line.substr(9));
+            at = end + 1;
         }
-        x.score = t.value("score", 0.0);
-        x.maxScore = t.value("max_score", 0.0);
-        s.maxScore += x.maxScore;
-        s.tests.push_back(x);
-    }
-    const std::string output = r.value("output", std::string());
-    for (size_t at = 0; at < output.size();) {
-        size_t end = output.find('\n', at);
-        if (end == std::string::npos) end = output.size();
-        const std::string line = output.substr(at, end - at);
-        if (line.rfind("warning: ", 0) == 0) s.warnings.push_back(line.substr(9));
-        at = end + 1;
-    }
-    if (s.tests.empty()) {
-        s.failed = true;
-        if (s.warnings.empty()) s.warnings.push_back(output.substr(0, output.find('\n')));
-    }
-    return s;
+    };
+    for (const auto& w : v.warnings) note(w);
+    if (!v.hiddenWarnings.empty())
+        note(std::to_string(v.hiddenWarnings.size()) + " about hidden scenes (for the course staff)");
+    return row;
 }
 
 int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base) {
@@ -127,11 +113,14 @@ int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base) {
         renderReferenceImages(r, shared.referenceImages);
     }
     std::vector<ChildSpec> specs;
+    const fs::path rows = base.out / ".rows";  // each child's BatchRow
+    fs::create_directories(rows);
     for (const auto& sub : subs) {
         GradeOptions o = shared;
         o.submission = sub;
         o.out = base.out / sub.filename();
         o.jobs = parallel > 1 ? 1 : base.jobs;
+        o.rowFile = rows / (sub.filename().string() + ".json");
         std::error_code ec;
         fs::create_directories(o.out, ec);
         specs.push_back(gradeSpec(o, base.out / (sub.filename().string() + ".log")));
@@ -148,41 +137,44 @@ int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base) {
                                      });
     std::cerr << "\n";
 
-    std::vector<GradeSummary> summaries(subs.size());
+    std::vector<BatchRow> table(subs.size());
     for (size_t i = 0; i < subs.size(); ++i) {
-        const fs::path results_json = base.out / subs[i].filename() / "results.json";
         const ChildResult& c = results[i];
         const bool exited = c.kind == ChildResult::Exited && (c.exitCode == 0 || c.exitCode == 1);
-        std::ifstream in(results_json);
-        nlohmann::json r = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
-        if (!exited || !r.is_object()) {
-            const std::string why =
-                c.kind == ChildResult::Signalled ? "the grader crashed (" + signalName(c.signal) + ")"
-                : c.kind == ChildResult::TimedOut ? "the grader did not finish in 1800 s"
-                : "the grader stopped (exit " + std::to_string(c.exitCode) + ")";
-            writeFailureResults(results_json, why, c.seconds);
-            summaries[i].failed = true;
-            summaries[i].warnings.push_back(why);
-            continue;
+        std::ifstream in(rows / (subs[i].filename().string() + ".json"));
+        const nlohmann::json r = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+        if (exited && r.is_object()) {
+            try {
+                table[i] = BatchRow::fromJson(r);
+                continue;
+            } catch (const std::invalid_argument&) {
+            }
         }
-        summaries[i] = summaryFromResults(r);
+        const std::string why =
+            c.kind == ChildResult::Signalled ? "the grader crashed (" + signalName(c.signal) + ")"
+            : c.kind == ChildResult::TimedOut ? "the grader did not finish in 1800 s"
+            : "the grader stopped (exit " + std::to_string(c.exitCode) + ")";
+        writeFailureResults(base.out / subs[i].filename() / "results.json", why, c.seconds);
+        table[i].failed = true;
+        table[i].notes.push_back(why);
     }
+    std::error_code ec;
+    fs::remove_all(rows, ec);
 
     std::ofstream csv(base.out / "scores.csv");
     csv << "submission,total,max";
     for (const auto& stage : stageNames()) csv << "," << stage;
     csv << ",notes\n";
     for (size_t i = 0; i < subs.size(); ++i) {
-        const auto& s = summaries[i];
-        const auto totals = stageTotals(s);
+        const BatchRow& s = table[i];
         csv << csvField(subs[i].filename().string()) << "," << points(s.score) << ","
             << points(s.maxScore);
         for (const auto& stage : stageNames()) {
-            auto it = totals.find(stage);
-            csv << "," << (it == totals.end() ? "" : points(it->second.first));
+            auto it = s.stagePoints.find(stage);
+            csv << "," << (it == s.stagePoints.end() ? "" : points(it->second));
         }
         std::string notes;
-        for (const auto& w : s.warnings) notes += (notes.empty() ? "" : "; ") + w;
+        for (const auto& w : s.notes) notes += (notes.empty() ? "" : "; ") + w;
         csv << "," << csvField(notes) << "\n";
     }
     return int(subs.size());

@@ -3,6 +3,9 @@
 #include "jobs.h"
 
 #include "gl_context.h"
+#include "golden.h"
+#include "image_io.h"
+#include "raw_image.h"
 #include "paths.h"
 #include "shader_source.h"
 #include "worker.h"
@@ -34,19 +37,8 @@ std::vector<std::pair<std::string, std::string>> shaderCacheEnvironment(const Gr
             {"MESA_SHADER_CACHE_DIR", cache.string()}, {"MESA_GLSL_CACHE_DIR", cache.string()}};
 }
 
-ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std::string& stage,
+ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const StageRow* stage,
                      const fs::path& input, const fs::path& out) {
-    std::vector<std::string> args = {"--backend", o.backend, "grade-worker",
-                                     "--scene", scene.path.string(),
-                                     "--stage", stage,
-                                     "--submission", (workDir(o) / "submission").string(),
-                                     "--input", input.string(),
-                                     "--out", out.string()};
-    if (haveReference()) args.insert(args.end(), {"--reference", (repoRoot() / "reference").string()});
-    ChildSpec spec;
-    spec.args = args;
-    spec.logPath = out / "log.txt";
-    spec.group = stage;
     WorkerArgs w;
     w.scene = scene.path.string();
     w.stage = stage;
@@ -55,7 +47,12 @@ ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std:
     w.input = input.string();
     w.out = out.string();
     w.backend = o.backend;
+    ChildSpec spec;
+    // Forked, the child runs workerMain(w); exec'd, the same arguments cross as JSON.
+    spec.args = {"--backend", o.backend, "grade-worker", "--job", w.toJson().dump()};
     spec.run = [w] { return workerMain(w); };
+    spec.logPath = out / "log.txt";
+    spec.group = stage ? stage->name : "reference";
     spec.env = shaderCacheEnvironment(o);
     // Most specific first: the staged copies, then OUT, then the kit and the scene's folder.
     auto dir = [](const fs::path& p) {
@@ -68,23 +65,6 @@ ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const std:
                   {dir(repoRoot()), ""},
                   {dir(scene.path.parent_path()), ""}};
     return spec;
-}
-
-std::vector<GradedScene> uniqueScenes(const std::vector<GradedScene>& scenes) {
-    std::vector<GradedScene> out;
-    for (const auto& s : scenes) {
-        bool seen = false;
-        for (const auto& o : out) {
-            if (o.name != s.name) continue;
-            std::error_code ec;
-            if (!fs::equivalent(o.path, s.path, ec))
-                throw std::runtime_error("two scenes are named \"" + s.name +
-                                         "\": rename one of the files");
-            seen = true;
-        }
-        if (!seen) out.push_back(s);
-    }
-    return out;
 }
 
 double stageTimeout(const GradeOptions& o, double referenceSeconds) {
@@ -117,6 +97,32 @@ std::map<std::string, double> readReferenceTimes(const fs::path& dir) {
     return times;
 }
 
+void decodeGoldens(const GradeOptions& o, const std::vector<GradedScene>& scenes, const fs::path& goldens) {
+    std::vector<ChildSpec> specs;
+    for (const auto& scene : scenes) {
+        const fs::path from = goldenFolder(scene, goldens) / scene.name;
+        const fs::path to = workDir(o) / "golden" / scene.name;
+        fs::create_directories(to);
+        ChildSpec spec;
+        spec.logPath = to / "log.txt";
+        spec.run = [from, to] {
+            std::error_code ec;
+            for (const auto& f : fs::directory_iterator(from, ec)) {
+                if (f.path().extension() != ".exr") continue;
+                const fs::path raw = to / (f.path().stem().string() + ".raw");
+                try {
+                    writeRaw(readAnyImage(f.path()), raw.string() + ".part");
+                    fs::rename(raw.string() + ".part", raw);
+                } catch (const std::exception&) {
+                }
+            }
+            return 0;
+        };
+        specs.push_back(spec);
+    }
+    runChildren(specs, {kTimeoutDefault, o.memoryMb}, o.jobs);
+}
+
 std::string resolveReferenceMode(const std::string& requested) {
     if (requested == "auto") return haveReference() ? "live" : "golden";
     return requested;
@@ -125,10 +131,10 @@ std::string resolveReferenceMode(const std::string& requested) {
 void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
     if (!haveReference()) throw std::runtime_error("live reference renders need reference/");
     std::vector<ChildSpec> specs;
-    const auto scenes = uniqueScenes(gradedScenes(o.scenes));
+    const auto scenes = gradedScenes(o.scenes);
     for (const auto& scene : scenes) {
         fs::create_directories(dir / scene.name);
-        specs.push_back(workerSpec(o, scene, "reference", "", dir / scene.name));
+        specs.push_back(workerSpec(o, scene, nullptr, "", dir / scene.name));
         specs.back().group.clear();
     }
     nlohmann::json times = nlohmann::json::object();

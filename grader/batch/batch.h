@@ -19,7 +19,8 @@ int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base);
 // children run this in a fork of the batch, or exec'd through the command line.
 int gradeAndPrint(const GradeOptions& options);
 
-// The summary a child's results.json holds (scores, per-stage tags, warnings).
-GradeSummary summaryFromResults(const nlohmann::json& results);
+// The row of scores.csv for a grade: the visible warnings as notes (those about hidden scenes
+// counted, not named), or the reason the grader failed.
+BatchRow batchRow(const GradeSummary& summary);
 
 }  // namespace sl::grader

@@ -25,7 +25,7 @@ bool turnedOff() {
 
 // The subcommands that render: one render gains ~0.35 s of CPU (llvmpipe's texture pages);
 // the second start costs ~0.03 s since OpenImageIO loads only on first use (image_codec.h).
-const char* const kUsers[] = {"render", "view", "grade", "golden", "study", "truth", "compare", "report", "bench"};
+const char* const kUsers[] = {"render", "view", "grade", "grade-submission", "golden", "study", "truth", "compare", "report", "bench"};
 
 // The subcommand: the first argument that is not an option (nor --backend's value).
 std::string subcommand(int argc, char** argv) {

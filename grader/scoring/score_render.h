@@ -18,7 +18,7 @@ namespace sl::grader {
 
 // What scoring needs to know about one stage render.
 struct RenderToScore {
-    std::string stage;                  // moments | gaussian | sat | msm | final | robustness
+    const StageRow& stage;
     const GradedScene& scene;           // the scene rendered (robustness: any; not named)
     std::filesystem::path out;          // the worker's folder: worker.json, <image>.raw
     std::string missing;                // "file: reason" when a file it needs was not taken
@@ -27,7 +27,8 @@ struct RenderToScore {
 };
 
 // The test's scene as results.json names it: the scene's name, "hard cases" for robustness.
-std::string testScene(const std::string& stage, const GradedScene& scene);
+// A reference render (stage nullptr) is named by its scene.
+std::string testScene(const StageRow* stage, const GradedScene& scene);
 
 // The test of a finished render. `referenceFile(image)` is the reference's image that
 // `image` is compared with; `report` (may be null) gets each compared image, and `findings`
