@@ -20,7 +20,7 @@ std::string goldenImageStage(const std::string& image) {
 
 namespace {
 
-std::string percent(double fraction) {
+std::string percentWithDecimals(double fraction) {
     char s[32];
     std::snprintf(s, sizeof s, "%.3f %%", 100.0 * fraction);
     return s;
@@ -37,8 +37,8 @@ std::string outsideTolerance(const std::string& image, const Image& fresh, const
     if (!c.error.empty()) return c.error;
     const double pass = rubric.ramp(stage).first;
     if (c.fraction < pass)
-        return percent(c.fraction) + " of the texels within the " + stage + " tolerance (full marks need " +
-               percent(pass) + ")";
+        return percentWithDecimals(c.fraction) + " of the texels within the " + stage + " tolerance (full marks need " +
+               percentWithDecimals(pass) + ")";
     if ((stage == "moments" || stage == "gaussian") && c.worst > rubric.worstTexelFactor)
         return "a texel is " + std::to_string(c.worst) + "x the " + stage + " tolerance off";
     return "";
