@@ -105,8 +105,9 @@ void planLightMaps(PassPlan& plan, const Scene& scene, int i, int c, const std::
     }
     char why[64];
     std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
-    rgba32f("scratch");
-    rgba32f("sat");
+    // The table has two texels per entry (satTableWidth).
+    for (const char* role : {"scratch", "sat"})
+        add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, satTableWidth(n), n, map.layers, 16));
     pass({PassKind::SatRows, i, -1, why, "scratch"});
     pass({PassKind::SatColumns, i, -1, why, "sat"});
     if (options.resolveSat) {

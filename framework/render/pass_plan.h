@@ -31,6 +31,10 @@ const char* toString(PassKind);
 // "raw" (the technique's map), "second" (second-depth midpoint), "wide" (a 16-bit map in
 // RGBA32F for the filters), "scratch" (the filters' first pass), "filtered" (Gaussian, or the
 // SAT resolve), "sat" (the summed-area table); per camera: "color", "shadow", "camera-depth".
+// Width of sat.comp's table for a map `mapWidth` texels wide: two texels per entry, so that an
+// entry can hold a sum exactly enough for any box (docs/stage_contract.md).
+inline int satTableWidth(int mapWidth) { return 2 * mapWidth; }
+
 struct PlannedTexture {
     int light = -1;
     int camera = -1;
