@@ -44,7 +44,7 @@ TEST(FilterBenchmark, SatLookupLightingRowSaysNotImplementedForAStubbedLookup) {
                                         {{"sat_lookup.glsl", resolveSolution("student")}},
                                         test::root()));
     BenchReport report = runFilterBenchmark(mixed, BenchOptions{32, 3, scene.string()});
-    const BenchRow* row = findRow(report, "sat lookup, lighting pass (tiny_sat)");
+    const BenchRow* row = findRow(report, "sat lookup, box 2, lighting pass (tiny_sat)");
     ASSERT_NE(row, nullptr) << formatBenchReport(report);
     EXPECT_FALSE(row->implemented);
     EXPECT_EQ(benchVerdict(*row), "not implemented");
@@ -53,7 +53,7 @@ TEST(FilterBenchmark, SatLookupLightingRowSaysNotImplementedForAStubbedLookup) {
     // The reference: timed, against the bilinear fetch, with the 1.2 goal and its spread.
     Renderer reference(test::library("reference"));
     report = runFilterBenchmark(reference, BenchOptions{32, 3, scene.string()});
-    row = findRow(report, "sat lookup, lighting pass (tiny_sat)");
+    row = findRow(report, "sat lookup, box 2, lighting pass (tiny_sat)");
     ASSERT_NE(row, nullptr) << formatBenchReport(report);
     EXPECT_TRUE(row->implemented);
     EXPECT_EQ(row->baseline, "bilinear fetch");
@@ -61,6 +61,13 @@ TEST(FilterBenchmark, SatLookupLightingRowSaysNotImplementedForAStubbedLookup) {
     EXPECT_LE(row->ratioMin, row->ratio);
     EXPECT_LE(row->ratio, row->ratioMax);
     EXPECT_NE(benchVerdict(*row), "not implemented");
+    // The largest box against the smallest, in the same repeats, with the 1.1 goal.
+    row = findRow(report, "sat lookup, box 512 / box 2, lighting pass");
+    ASSERT_NE(row, nullptr) << formatBenchReport(report);
+    EXPECT_EQ(row->baseline, "sat lookup, box 2");
+    EXPECT_DOUBLE_EQ(row->goal, 1.1);
+    EXPECT_LE(row->ratioMin, row->ratio);
+    EXPECT_LE(row->ratio, row->ratioMax);
 }
 
 TEST(FilterBenchmark, StubStagesAreNotImplementedAndGetNoVerdict) {
