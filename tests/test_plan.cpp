@@ -115,8 +115,9 @@ const std::vector<Expected> kLadder = {
     {Technique::Pcf, FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
-    // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table (both twice the map's width: two texels per entry), and the resolve's
-    // filtered map (output only; PlanOptions::resolveSat). A map a filter stage reads is
+    // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table (both twice the map's
+    // width: two texels per entry), and the resolve's filtered map (output only;
+    // PlanOptions::resolveSat). A map a filter stage reads is
     // RGBA32F (the stage contract's format), so VSM's two channels fill half of each texel.
     {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 3 * 16, 2},
