@@ -34,8 +34,8 @@
 
 // 8 x 32, the reference's shape: llvmpipe runs 8 consecutive invocations as one SIMD vector.
 // Rows: let those 8 be 8 chunks of one row (8 rows at once share an L1 set at 1024²). Columns:
-// let them be 8 neighbouring columns, so each step down reads a run of one row; walking 4
-// columns per invocation halves the column pass again (docs/performance.md, SAT).
+// let them be 8 neighbouring columns, so each step down reads a run of one row
+// (docs/performance.md, SAT).
 layout(local_size_x = 8, local_size_y = 32, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
