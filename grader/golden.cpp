@@ -3,10 +3,11 @@
 // below half's precision) but with the mantissa rounded to kMomentMantissaBits bits, a
 // relative error of 2^-16 (100× inside the tolerance) that lets ZIP compress the low bits
 // away; shadow and colour images are half floats (error ≤ 5e-4, 20× inside their tolerance).
-// Both encodings are deterministic, so `golden --check` can compare hashes with the manifest.
-// Beside each EXR, a PNG preview (<image>.png) for people to look at, checked the same way.
+// The manifest lists each file's SHA-256 and its pixels' (`golden --check` compares pixels:
+// golden_check.h). Beside each EXR, a PNG preview (<image>.png) for people to look at.
 // Hidden scenes' goldens go into goldens/ next to their scene file, never the public folder.
 #include "golden.h"
+#include "golden_check.h"
 #include "raw_image.h"
 #include "report.h"
 #include "worker.h"
@@ -63,9 +64,14 @@ void writeGolden(const Image& pixels, const fs::path& dir, const std::string& sc
                  nlohmann::json& previews) {
     const fs::path exr = dir / (image + ".exr"), png = dir / (image + ".png");
     writeEncoded(pixels, exr, moments);
-    images[image] = nlohmann::json{{"file", scene + "/" + image + ".exr"}, {"sha256", sha256File(exr)}};
-    writePngPreview(previewImage(readAnyImage(exr)), png, image.rfind("final", 0) == 0);
-    previews[image] = nlohmann::json{{"file", scene + "/" + image + ".png"}, {"sha256", sha256File(png)}};
+    const Image stored = readAnyImage(exr);
+    images[image] = nlohmann::json{{"file", scene + "/" + image + ".exr"},
+                                   {"sha256", sha256File(exr)},
+                                   {"pixels_sha256", sha256Pixels(stored)}};
+    writePngPreview(previewImage(stored), png, image.rfind("final", 0) == 0);
+    previews[image] = nlohmann::json{{"file", scene + "/" + image + ".png"},
+                                     {"sha256", sha256File(png)},
+                                     {"pixels_sha256", sha256Pixels(readImage(png))}};
 }
 
 std::string envOr(const char* name, const char* fallback) {
@@ -135,31 +141,6 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
     return entry;
 }
 
-// What a fresh render differs in from a folder's manifest (check).
-void compareEntry(const std::string& scene, const nlohmann::json& fresh,
-                  const nlohmann::json& committed, std::vector<std::string>& stale) {
-    const auto& scenes = committed.is_object() && committed.contains("scenes")
-                             ? committed["scenes"] : nlohmann::json::object();
-    if (!scenes.contains(scene)) {
-        stale.push_back(scene + ": no goldens in the manifest");
-        return;
-    }
-    const auto& old = scenes[scene];
-    if (old.value("scene_sha256", "") != fresh["scene_sha256"].get<std::string>())
-        stale.push_back(scene + ": the scene file changed since its goldens were made");
-    for (const auto& [image, e] : fresh["images"].items())
-        if (!old["images"].contains(image) || old["images"][image]["sha256"] != e["sha256"])
-            stale.push_back(scene + "/" + image);
-    for (const auto& [image, e] : old["images"].items())
-        if (!fresh["images"].contains(image))
-            stale.push_back(scene + "/" + image + ": in the manifest, no longer rendered");
-    // The PNG previews are checked like the images they show.
-    const auto& oldPreviews = old.contains("previews") ? old["previews"] : nlohmann::json::object();
-    for (const auto& [image, e] : fresh["previews"].items())
-        if (!oldPreviews.contains(image)) stale.push_back(scene + "/" + image + ".png: no preview in the manifest");
-        else if (oldPreviews[image]["sha256"] != e["sha256"]) stale.push_back(scene + "/" + image + ".png");
-}
-
 }  // namespace
 
 fs::path goldenFolder(const GradedScene& scene, const fs::path& publicGoldens) {
@@ -225,11 +206,21 @@ GoldenRun runGoldens(const GoldenOptions& o) {
             ++it;
         }
         if (o.check) {
+            const bool sameRenderer = manifest.value("mesa_version", "") == info.mesaVersion &&
+                                      manifest.value("renderer", "") == info.renderer;
+            if (!sameRenderer)
+                run.messages.push_back("the goldens in " + folder.string() + " were made on \"" +
+                                       manifest.value("renderer", "?") + "\", Mesa " +
+                                       manifest.value("mesa_version", "?") + "; this is \"" +
+                                       info.renderer + "\", Mesa " + info.mesaVersion +
+                                       ": images are checked against the grading tolerance");
             for (const auto& [gs, entry] : entries) {
-                const size_t before = run.stale.size();
-                compareEntry(gs.name, entry, manifest, run.stale);
-                if (run.stale.size() > before)
-                    staleScenes.push_back(gs.hidden ? gs.path.string() : gs.name);
+                GoldenVerdicts v;
+                checkGoldenEntry(gs.name, entry, staging / gs.name, manifest, folder / gs.name,
+                                 sameRenderer, v);
+                run.stale.insert(run.stale.end(), v.stale.begin(), v.stale.end());
+                for (const auto& n : v.notes) run.messages.push_back("within tolerance: " + n);
+                if (!v.stale.empty()) staleScenes.push_back(gs.hidden ? gs.path.string() : gs.name);
             }
             continue;
         }
@@ -245,6 +236,7 @@ GoldenRun runGoldens(const GoldenOptions& o) {
         manifest["renderer"] = info.renderer;
         manifest["gl_version"] = info.version;
         manifest["backend"] = info.backend;
+        manifest["image_library"] = "OpenImageIO " + imageLibraryVersion();
         manifest["settings"] = {
             {"LP_NUM_THREADS", envOr("LP_NUM_THREADS", "")},
             {"GALLIUM_DRIVER", envOr("GALLIUM_DRIVER", "llvmpipe")},

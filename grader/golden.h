@@ -23,12 +23,13 @@ struct GoldenOptions {
     fs::path out;                      // public goldens, e.g. scenes/goldens
     std::vector<std::string> scenes;   // empty: every graded public scene
     std::string backend = "auto";
-    bool check = false;  // render, encode, and compare hashes with the manifests instead
+    bool check = false;  // render, encode, and compare pixels with the goldens instead
 };
 
 struct GoldenRun {
     std::vector<std::string> stale;     // check: "scene/image" (or "scene: why") that differ
-    std::vector<std::string> messages;  // for the terminal: folders written, entries kept, leaks
+    std::vector<std::string> messages;  // for the terminal: folders written, entries kept, leaks,
+                                        // images within tolerance on another renderer
     std::string advice;                 // check with stale goldens: the command that remakes them
 };
 
@@ -37,7 +38,9 @@ struct GoldenRun {
 // and the values; nothing is written), and writes, per scene, <folder>/<scene>/<image>.exr
 // (moments float32 with a shortened mantissa, images half; ZIP), beside each its PNG preview
 // <image>.png (at most 512 wide; colour sRGB), and <folder>/manifest.json (the SHA-256 of
-// both: `check` compares the previews too).
+// both files and of their pixels, and the Mesa, LLVM and OpenImageIO versions). `check`
+// compares pixels (golden_check.h): identical on the goldens' renderer, within the grading
+// tolerance on another.
 // A manifest is merged: entries of scenes not rendered this time are kept (and listed in
 // `messages`), never dropped. With `check`, writes nothing and lists what differs.
 GoldenRun runGoldens(const GoldenOptions& options);

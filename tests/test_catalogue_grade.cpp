@@ -40,6 +40,14 @@ std::map<std::string, StageScore> stageScores(const json& results) {
     return stages;
 }
 
+// The reference the catalogue is graded against: live (the default), or the committed
+// goldens with SHADOWLAB_CATALOGUE_REFERENCE=golden (how the verdicts were checked against
+// goldens made on another Mesa: docs/catalogue.md).
+std::string referenceMode() {
+    const char* mode = std::getenv("SHADOWLAB_CATALOGUE_REFERENCE");
+    return mode && std::string(mode) == "golden" ? "golden" : "live";
+}
+
 // Every entry through `shadowlab grade`. Each entry is a complete submission: the reference's
 // five files with the entry's file(s) on top (a folder with the one file alone would, rightly,
 // grade the other stages "not submitted"). Graded on its first scene (the catalogue lists
@@ -74,7 +82,8 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
         const auto start = std::chrono::steady_clock::now();
         const test::CommandResult run = test::runCommand(
             test::shadowlabBinary() + " grade --batch '" + batch.string() + "' --out '" +
-            out.string() + "' --scenes " + scene + " --reference live --no-report -j 2 --timeout 120");
+            out.string() + "' --scenes " + scene + " --reference " + referenceMode() +
+            " --no-report -j 2 --timeout 120");
         std::printf("[catalogue] grade --batch of %zu entries on %s: %.1f s, exit %d\n",
                     entries.size(), scene.c_str(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -111,9 +120,7 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                     // The end-to-end "final" stage may lose points too: not checked. Nor may
                     // "robustness" for an msm mutant: it probes the same msm.glsl.
                     const bool sameFile = e->stage == "msm" && stage == "robustness";
-                    if (stage == e->stage) {
-                        EXPECT_FALSE(s.full()) << "a mutant must lose points on its own stage";
-                    } else if (stage != "final" && !sameFile) {
+                    if (stage != e->stage && stage != "final" && !sameFile) {
                         EXPECT_TRUE(s.full()) << "a mutant must not lose points on another stage";
                     }
                 } else if (stage == "robustness" && e->stage == "msm" && e->robustnessReported) {
@@ -128,6 +135,18 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                     finalLosses += e->name + ": final " + std::to_string(s.score) + " / " +
                                    std::to_string(s.max) + " on " + scene + "; ";
                 }
+            }
+            if (e->mutant()) {
+                // A mutant loses on its own stage. msm.glsl is graded twice, on the scenes'
+                // images (msm) and on the hard cases (robustness), and either counts: a missing
+                // moment bias is off on 12 hard cases on every Mesa and against the goldens,
+                // while on classic's images it is a margin case (97.3 % against the ramp's 98 %,
+                // live on Mesa 22.3.6; full against the goldens on Mesa 25.0.7).
+                const auto lost = [&](const std::string& stage) {
+                    return stages.count(stage) && !stages.at(stage).full();
+                };
+                EXPECT_TRUE(lost(e->stage) || (e->stage == "msm" && lost("robustness")))
+                    << "a mutant must lose points on its own stage";
             }
         }
     }

@@ -47,17 +47,13 @@ TEST(Grader, CommittedGoldensMatchALiveReferenceRender) {
     // Stale goldens (after a change to reference/ or a scene) must not pass silently. Remake:
     //   build/shadowlab golden --solution reference --out scenes/goldens
     const fs::path goldens = test::root() / "scenes" / "goldens";
-    auto manifest = nlohmann::json::parse(std::ifstream(goldens / "manifest.json"));
     auto g = test::grade("--reference golden --scenes classic,contact --no-report --submission " +
                              (test::root() / "reference").string(),
                          test::tempDir("grader_reference_golden"));
     ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
     EXPECT_DOUBLE_EQ(g.results["score"].get<double>(), 100.0) << g.run.output;
-    // Same Mesa as the manifest: the encoded images must be bit-identical.
-    auto info = test::runCommand(test::shadowlabBinary() + " info");
-    if (info.output.find(manifest["mesa_version"].get<std::string>()) == std::string::npos)
-        GTEST_SKIP() << "this Mesa differs from the goldens' (" << manifest["mesa_version"]
-                     << "): only the tolerance check above applies";
+    // golden --check: the same pixels on the goldens' renderer, within the grading tolerance
+    // on any other (golden_check.h).
     auto check = test::runCommand(test::shadowlabBinary() + " golden --check");
     EXPECT_EQ(check.exitCode, 0) << "goldens are stale; remake them with\n"
                                     "  build/shadowlab golden --solution reference --out scenes/goldens\n"

@@ -5,9 +5,13 @@
 # archive HEAD) into /root/shadowlab there, and runs `./kit demo` then `./kit test` as root in a
 # chroot: ./kit must install everything itself.
 # A failure names the release, the command and its last lines. Needs root and debootstrap.
+# Downloaded .debs and ccache's objects are kept between runs (in $SHADOWLAB_FRESH_CACHE, default
+# /var/cache/shadowlab-fresh/RELEASE): the root is still bare and ./kit still installs and builds
+# everything, only without the network and compiler time; SHADOWLAB_FRESH_CACHE=none runs cold.
 set -euo pipefail
 release="${1:?usage: tools/fresh-root.sh bookworm|trixie [ROOT]}"
 root="${2:-/var/tmp/shadowlab-fresh-$release}"
+cache="${SHADOWLAB_FRESH_CACHE:-/var/cache/shadowlab-fresh}"
 kit="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mirror="${SHADOWLAB_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
 say() { printf '[fresh-root %s] %s\n' "$release" "$*"; }
@@ -53,6 +57,14 @@ for m in proc sys dev dev/pts dev/shm; do
   esac
   mounts+=("$root/$m")
 done
+if [ "$cache" != none ]; then
+  for pair in "apt:var/cache/apt/archives" "ccache:root/.cache/ccache"; do
+    mkdir -p "$cache/$release/${pair%%:*}" "$root/${pair#*:}"
+    [ "${pair%%:*}" = apt ] && mkdir -p "$cache/$release/apt/partial"
+    mount --bind "$cache/$release/${pair%%:*}" "$root/${pair#*:}"
+    mounts+=("$root/${pair#*:}")
+  done
+fi
 
 for cmd in "./kit demo" "./kit test"; do
   log="$root.$(echo "$cmd" | tr -c 'a-z' '_').log"

@@ -105,7 +105,9 @@ void contactSheet(const std::string& path, const std::vector<std::string>& files
     if (!sheet.write(path)) throw std::runtime_error(path + ": " + sheet.geterror());
 }
 
-const sl::ImageCodec kCodec = {write, read, compare, contactSheet};
+const char* version() { return OIIO_VERSION_STRING; }
+
+const sl::ImageCodec kCodec = {write, read, compare, contactSheet, version};
 
 }  // namespace
 

@@ -42,6 +42,8 @@ struct ImageCodec {
     // A grid of `columns` PNGs (8-bit), each under a label band ("" leaves it empty), as a PNG.
     void (*contactSheet)(const std::string& path, const std::vector<std::string>& images,
                          const std::vector<std::string>& labels, int columns);
+    // OpenImageIO's version, e.g. "2.4.7" (goldens record it: its encoders' bytes differ).
+    const char* (*version)();
 };
 
 // The module's table, loaded on first call (thread-safe). Throws std::runtime_error if the

@@ -108,6 +108,16 @@ std::string sha256File(const fs::path& path) {
     return hexDigest(ctx);
 }
 
+std::string sha256Pixels(const Image& image) {
+    std::string data = std::to_string(image.width) + "x" + std::to_string(image.height) + "x" +
+                       std::to_string(image.channels) + ":";
+    data.append(reinterpret_cast<const char*>(image.pixels.data()),
+                image.pixels.size() * sizeof(float));
+    return sha256Hex(data);
+}
+
+std::string imageLibraryVersion() { return imageCodec().version(); }
+
 std::string sha256Hex(const std::string& data) {
     EVP_MD_CTX* ctx = EVP_MD_CTX_new();
     EVP_DigestInit_ex(ctx, EVP_sha256(), nullptr);

@@ -27,5 +27,10 @@ void writePngPreview(const Image& image, const fs::path& path, bool srgb);
 // SHA-256 in lowercase hex: of a file's bytes, and of a string (cache keys, scene digests).
 std::string sha256File(const fs::path& path);
 std::string sha256Hex(const std::string& data);
+// Of an image's size, channel count and float samples: equal for equal pixels, whatever the
+// file's encoder wrote around them (OpenEXR 3.1 and 3.2 compress the same pixels differently).
+std::string sha256Pixels(const Image& image);
+
+std::string imageLibraryVersion();  // OpenImageIO's, e.g. "2.4.7"
 
 }  // namespace sl
