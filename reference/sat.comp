@@ -2,103 +2,65 @@
 // Reference solution. Stage contract: docs/stage_contract.md.
 //
 // Dispatched twice: along rows (uDirection = (1, 0)), then along the columns of the result
-// (uDirection = (0, 1)). Afterwards dst holds the summed-area table Σ_{i <= x, j <= y}
-// moments(i, j) with an offset subtracted (see "Precision" below), from which
-// sat_lookup.glsl gets the mean over a box of any size.
+// (uDirection = (0, 1)). Afterwards the table holds S(x, y) = Σ_{i <= x, j <= y} m(i, j), the
+// summed-area table, from which sat_lookup.glsl gets the mean over a box of any size in four
+// corner reads.
 //
-// Invocation mapping: the framework dispatches 1 × ceil(lineCount / SAT_LINES) work groups.
-// A work group owns SAT_LINES consecutive lines (line = gl_WorkGroupID.y · SAT_LINES + ...),
-// and its invocations split them into contiguous chunks (rows: SAT_CHUNKS chunks per row;
-// columns: SAT_LINES chunks per column, 4 columns per invocation; "Work-group shape" below).
-// Chunks are whole tiles (below), so each invocation scans its chunk alone: no shared memory,
-// no barrier. Work per line: n image loads and n stores, i.e. O(n). Any length n >= 1 works
-// (trailing chunks of a short line are empty).
+// Precision (docs/numerics.md): S grows to ~(width · height) · moment, and a float32 entry of
+// that size is off by ~6e-8 of it: ~3e-2 on a 1-texel box at the far corner of 1024² once
+// the lookup subtracts nearly equal corners. So the sums are kept in double and each entry is
+// stored in the two texels the framework gives it (the table is 2W × H): the float nearest
+// the sum at (2x, y) and the float nearest what is left at (2x + 1, y). Their sum holds ~48
+// bits, so a box's corners cancel to ~1e-7 of an entry's size whatever the box.
 //
-// Precision (docs/numerics.md): a plain float32 table grows to ~(width · height) · moment,
-// and its rounding error (~6e-8 relative) swamps a small box's sum once sat_lookup.glsl
-// subtracts nearly equal corners: ~3e-2 error on a 1-texel box at the far corner of 1024².
-// So we store the table with an offset subtracted, in two ways at once:
-//   * tiles: the sums restart every SAT_TILE texels along each line, so the table is made
-//     of independent SAT_TILE² tiles and no entry sums more than SAT_TILE² texels;
-//   * differences: within a tile segment src(g .. g + SAT_TILE - 1) of a line,
-//         dst(g) = src(g);                 dst(i) = Σ_{g < k <= i} (src(k) - src(g)).
-// After rows then columns, a tile with origin O holds, with a = m(O) and local coordinates,
-//     T(0, 0) = a,   T(x, 0) = Σ_{1<=i<=x} (m(i, 0) - a),   T(0, y) = Σ_{1<=j<=y} (m(0, j) - a),
-//     T(x, y) = Σ_{1<=i<=x, 1<=j<=y} (m(i,j) - m(0,j) - m(i,0) + a)      (x, y >= 1):
-// sums of differences that stay 0 on smooth depth (a lit ground plane) and small elsewhere.
-// sat_lookup.glsl rebuilds the box sum from them, tile by tile.
-// Measured on Mesa 22.3 llvmpipe, 1024² RGBA32F: docs/numerics.md, "Speed".
-
-// Work-group shape, measured on llvmpipe (docs/performance.md, SAT): llvmpipe runs 8
-// consecutive invocations as the lanes of one SIMD vector, so invocation i takes the role
-// i % 8 among 8 and its chunk from i / 8 in both passes:
-//   rows:    the 8 lanes are 8 chunks of one row (8 rows at once would be 16 KiB apart at
-//            1024², all in one L1 set (address mod 4 KiB) with the rows they write, more
-//            lines than its 8 ways: 1.6 copies instead of 1.0-1.2 on a Zen 3 EPYC);
-//   columns: the 8 lanes are 8 quads of neighbouring columns, 4 columns per invocation, so
-//            each step down reads a 512-byte run of a row (one cache line per lane) and has
-//            8 independent lines in flight: 2.8 copies with one column per invocation, 1.4
-//            with four, at 1024² on a Zen 3 EPYC, where a walk down columns waits on memory.
-// The table does not depend on the shape: the sums restart at every tile.
-#define SAT_CHUNKS 8   // local_size_x: chunks per row (row pass), column quads (column pass)
+// Invocation mapping: the framework dispatches 1 × ceil(lineCount / SAT_LINES) work groups of
+// SAT_CHUNKS × SAT_LINES invocations; a group owns SAT_LINES consecutive lines. Each line is
+// cut into contiguous chunks, one per invocation: the invocation sums its chunk, the chunk
+// totals go through shared memory, and after one barrier each invocation walks its chunk
+// again from the sum of the chunks before it. Work per line: 2n loads and n entry stores,
+// O(n). Any length n >= 1 works (trailing chunks of a short line are empty).
+//
+// Work-group shape (docs/performance.md, SAT): llvmpipe runs 8 consecutive invocations as
+// the lanes of one SIMD vector. Rows: the 8 lanes are 8 chunks of one row (8 rows at once
+// would be 16 KiB apart at 1024², all in one L1 set). Columns: the 8 lanes are 8
+// neighbouring columns, so each step down reads one run of a row.
+#define SAT_CHUNKS 8   // local_size_x
 #define SAT_LINES  32  // local_size_y: lines per work group (the framework's dispatch unit)
-#define SAT_TILE   32  // tile size; must equal SAT_TILE in sat_lookup.glsl
-#define SAT_QUAD   4   // columns per invocation in the column pass
 
 layout(local_size_x = SAT_CHUNKS, local_size_y = SAT_LINES, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
 uniform ivec2 uDirection;  // (1, 0): prefix sums along rows; (0, 1): along columns
-uniform ivec2 uImageSize;
+uniform ivec2 uImageSize;  // the moment map's width and height (the table is twice as wide)
 
-// Chunk `chunk` of `chunks` along a line of length n: [begin, end), a whole number of tiles
-// (the last may be short, trailing ones empty).
+// One chunk total per invocation.
+shared dvec4 sTotals[SAT_CHUNKS * SAT_LINES];
+
+// Chunk `chunk` of `chunks` along a line of length n: [begin, end) (trailing ones empty).
 ivec2 chunkRange(int chunk, int chunks, int n)
 {
-    int tilesPerChunk = ((n + SAT_TILE - 1) / SAT_TILE + chunks - 1) / chunks;
-    int begin = min(chunk * tilesPerChunk * SAT_TILE, n);
-    return ivec2(begin, min(begin + tilesPerChunk * SAT_TILE, n));
+    int length = (n + chunks - 1) / chunks;
+    int begin = min(chunk * length, n);
+    return ivec2(begin, min(begin + length, n));
 }
 
-// One step of a tile segment's scan at position i of the line: at a tile's first texel
-// first = v and dst = v; after it running += v - first and dst = running. Selects, not an
-// if/else: llvmpipe runs both sides of a branch, and each side held a store.
-vec4 scanStep(int i, vec4 v, inout vec4 first, inout vec4 running)
+// Entry x of line `line`: the row pass reads the moment map, the column pass the row pass's
+// two-texel entries.
+dvec4 loadEntry(bool alongRows, int line, int x)
 {
-    bool start = i % SAT_TILE == 0;
-    first = start ? v : first;
-    running = start ? vec4(0.0) : running + (v - first);
-    return start ? first : running;
+    if (alongRows)
+        return dvec4(imageLoad(uSource, ivec2(x, line)));
+    ivec2 t = ivec2(2 * line, x);
+    return dvec4(imageLoad(uSource, t)) + dvec4(imageLoad(uSource, t + ivec2(1, 0)));
 }
 
-// Row pass: texels [begin, end) of row `row`.
-void scanRow(int row, ivec2 range)
+// Stores a sum as its nearest float and the float nearest the rest.
+void storeEntry(ivec2 entry, dvec4 sum)
 {
-    vec4 first = vec4(0.0), running = vec4(0.0);
-    for (int i = range.x; i < range.y; ++i) {
-        ivec2 texel = ivec2(i, row);
-        imageStore(uDestination, texel, scanStep(i, imageLoad(uSource, texel), first, running));
-    }
-}
-
-// Column pass: texels [begin, end) of the SAT_QUAD columns from `column` on (those left of
-// `columns`), walked down together.
-void scanColumns(int column, int columns, ivec2 range)
-{
-    vec4 first[SAT_QUAD], running[SAT_QUAD];
-    for (int c = 0; c < SAT_QUAD; ++c)
-        first[c] = running[c] = vec4(0.0);
-    for (int i = range.x; i < range.y; ++i) {
-        vec4 v[SAT_QUAD];
-        for (int c = 0; c < SAT_QUAD; ++c)  // all loads first: they are independent
-            v[c] = imageLoad(uSource, ivec2(column + c, i));
-        for (int c = 0; c < SAT_QUAD; ++c) {
-            vec4 sum = scanStep(i, v[c], first[c], running[c]);
-            if (column + c < columns)
-                imageStore(uDestination, ivec2(column + c, i), sum);
-        }
-    }
+    vec4 high = vec4(sum);
+    imageStore(uDestination, ivec2(2 * entry.x, entry.y), high);
+    imageStore(uDestination, ivec2(2 * entry.x + 1, entry.y), vec4(sum - dvec4(high)));
 }
 
 void main()
@@ -106,16 +68,28 @@ void main()
     int local = int(gl_LocalInvocationIndex);
     int lane = local % SAT_CHUNKS, slot = local / SAT_CHUNKS;
     int firstLine = int(gl_WorkGroupID.y) * SAT_LINES;
-    if (uDirection.x != 0) {
-        // Row firstLine + slot, chunk `lane` of SAT_CHUNKS.
-        int row = firstLine + slot;
-        if (row < uImageSize.y)
-            scanRow(row, chunkRange(lane, SAT_CHUNKS, uImageSize.x));
-    } else {
-        // Columns firstLine + SAT_QUAD·lane ..., chunk `slot` of SAT_LINES (the group's
-        // SAT_LINES columns are SAT_CHUNKS quads).
-        int column = firstLine + SAT_QUAD * lane;
-        if (column < uImageSize.x)
-            scanColumns(column, uImageSize.x, chunkRange(slot, SAT_LINES, uImageSize.y));
+    bool alongRows = uDirection.x != 0;
+    int lineLength = alongRows ? uImageSize.x : uImageSize.y;
+    int lineCount  = alongRows ? uImageSize.y : uImageSize.x;
+    // Rows: row firstLine + slot, chunk `lane` of SAT_CHUNKS. Columns: the 8 lanes are 8
+    // neighbouring columns, the group's 32 columns 4 such runs; each column has 8 chunks.
+    int line  = alongRows ? firstLine + slot : firstLine + lane + SAT_CHUNKS * (slot % 4);
+    int chunk = alongRows ? lane : slot / 4;
+    bool live = line < lineCount;
+    ivec2 range = live ? chunkRange(chunk, SAT_CHUNKS, lineLength) : ivec2(0);
+
+    dvec4 total = dvec4(0.0);
+    for (int i = range.x; i < range.y; ++i)
+        total += loadEntry(alongRows, line, i);
+    sTotals[local] = total;
+    barrier();  // reached by every invocation: no early return above
+
+    // The sum of the chunks before this one, of the same line.
+    dvec4 running = dvec4(0.0);
+    for (int k = 0; k < chunk; ++k)
+        running += sTotals[alongRows ? slot * SAT_CHUNKS + k : (4 * k + slot % 4) * SAT_CHUNKS + lane];
+    for (int i = range.x; i < range.y; ++i) {
+        running += loadEntry(alongRows, line, i);
+        storeEntry(alongRows ? ivec2(i, line) : ivec2(line, i), running);
     }
 }

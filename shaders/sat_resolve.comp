@@ -11,7 +11,7 @@ uniform float uSatKernel;  // box size in texels
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = textureSize(uSat, 0);
+    ivec2 size = imageSize(uDestination);  // the map's (the table is twice as wide)
     if (any(greaterThanEqual(p, size))) return;
     imageStore(uDestination, p, satBoxAverage(uSat, vec2(p) + 0.5, vec2(uSatKernel)));
 }

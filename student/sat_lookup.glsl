@@ -7,8 +7,10 @@
 //
 // vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
 //   sat      the table written by your sat.comp: S(i, j) = sum of the moments of all texels
-//            (x, y) with x <= i and y <= j. Bound with nearest filtering: read it with
-//            texelFetch(sat, ivec2(i, j), 0). textureSize(sat, 0) is the map's size.
+//            (x, y) with x <= i and y <= j, entry (i, j) in the two texels (2i, j) and
+//            (2i + 1, j) as your sat.comp stored it. Bound with nearest filtering: read it
+//            with texelFetch(sat, ivec2(2 * i, j), 0) and texelFetch(sat, ivec2(2 * i + 1, j), 0).
+//            textureSize(sat, 0) is (2W, H) for a W × H map.
 //   center   centre of the box in texel units (texel i covers [i, i + 1)).
 //   boxSize  its width and height in texels; fractional sizes are allowed (>= 1).
 //   returns  the mean of the moment map over the box clipped to the map, partially covered
@@ -16,8 +18,8 @@
 //            With S(-1) = 0, the sum of all texels left of a box edge at position e is S
 //            linearly interpolated at index e - 1.
 //
-// If your sat.comp stores the table with an offset subtracted (a precision fix), undo it
-// here: the two files are graded together, on the box averages this function returns.
+// Read the entries back the way your sat.comp stored them: the two files are graded
+// together, on the box averages this function returns.
 //
 // Stub value: until implemented, the function returns -1 in every channel, which the
 // framework reports as "not implemented yet" and previews in magenta. A correct solution
@@ -35,9 +37,10 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
     //  3. The box sum is the inclusion-exclusion of the four corner sums:
     //         S(x1, y1) - S(x0, y1) - S(x1, y0) + S(x0, y0).
     //  4. Divide by the clipped area (and decide what a box with no area returns).
-    // Speed (docs/performance.md): the lighting pass calls this per pixel, and every
-    // texelFetch costs about 1/25 of the whole pass on llvmpipe. Its SIMD lanes run both sides
-    // of every branch, and a loop's body once more, all lanes masked off, after the last
-    // iteration: if you loop (e.g. over tiles), put the test at the end (do { } while).
+    // Precision: the corners are sums of up to W·H moments, and a small box is the difference
+    // of nearly equal ones: float32 is far too coarse for that (double is not).
+    // Speed (docs/performance.md): the lighting pass calls this per pixel with boxes from 1 to
+    // hundreds of texels; the point of the table is that the cost does not depend on the box
+    // (16 entries, whatever its size). llvmpipe's SIMD lanes run both sides of every branch.
     return vec4(-1.0);
 }

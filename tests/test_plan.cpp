@@ -175,14 +175,15 @@ const std::vector<Expected> kLadder = {
     {Technique::Pcf, FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
-    // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table, and the resolve's
-    // filtered map (output only, asked for here: PlanOptions::resolveSat). A map a filter stage reads is
+    // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table (both twice the map's
+    // width: two texels per entry), and the resolve's filtered map (output only, asked for
+    // here: PlanOptions::resolveSat). A map a filter stage reads is
     // RGBA32F (the stage contract's format), so VSM's two channels fill half of each texel.
     {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 3 * 16, 2},
     {Technique::Vsm, FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
-     4 + 4 * 16, 2},
+     4 + 2 * 16 + 2 * 32, 2},
     {Technique::Vsm, FilterKind::None, {K::Shadow, K::Lighting}, "RG32F", 1, 8, 4 + 8, 2},
     {Technique::Evsm2, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 48, 2},
@@ -191,10 +192,11 @@ const std::vector<Expected> kLadder = {
     // CSM, M = 8 terms (the default): 16 channels in four RGBA32F maps, each filtered.
     {Technique::Csm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 4, 16, 4 + 3 * 64, 16},
-    // msm4 = the student stages: SAT rows, columns, and the resolve for output.
+    // msm4 = the student stages: SAT rows, columns, and the resolve for output. The table and
+    // the row pass's scratch have two RGBA32F texels per map texel.
     {Technique::Msm4, FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
-     4 + 4 * 16, 4},
+     4 + 2 * 16 + 2 * 32, 4},
     {Technique::Msm4, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 48, 4},
     {Technique::Msm4Hausdorff, FilterKind::Gaussian,
@@ -205,11 +207,11 @@ const std::vector<Expected> kLadder = {
      4 + 8 + 3 * 16, 4},
     {Technique::Msm4_16bit, FilterKind::Sat,
      {K::Shadow, K::Widen, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA16", 1, 8,
-     4 + 8 + 4 * 16, 4},
+     4 + 8 + 2 * 16 + 2 * 32, 4},
     {Technique::Msm4_16bit, FilterKind::None, {K::Shadow, K::Lighting}, "RGBA16", 1, 8, 4 + 8, 4},
     {Technique::MsmSoft, FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
-     4 + 64, 4},
+     4 + 2 * 16 + 2 * 32, 4},
 };
 
 }  // namespace

@@ -56,8 +56,9 @@ std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Im
         throw std::invalid_argument("probe: the SAT probe needs a non-empty RGBA moment map");
     Renderer renderer(library);  // its satPass: the same dispatch as a render
     Texture src = Texture::create(moments.width, moments.height, GL_RGBA32F);
-    Texture rows = Texture::create(moments.width, moments.height, GL_RGBA32F);
-    Texture table = Texture::create(moments.width, moments.height, GL_RGBA32F);
+    const int tableWidth = satTableWidth(moments.width);
+    Texture rows = Texture::create(tableWidth, moments.height, GL_RGBA32F);
+    Texture table = Texture::create(tableWidth, moments.height, GL_RGBA32F);
     src.upload(moments);
     renderer.satPass(src, rows, {1, 0});
     renderer.satPass(rows, table, {0, 1});

@@ -1,5 +1,5 @@
 // filter_benchmark: interleaved timing of the two copies, Gaussian and SAT passes, and of the
-// lighting pass with a SAT lookup against a bilinear fetch (see the header).
+// lighting pass with a SAT lookup at several box sizes against a bilinear fetch (see the header).
 #include "filter_benchmark.h"
 
 #include "cost_clock.h"
@@ -109,10 +109,15 @@ double lightingMillis(const RenderResult& result, const PassPlan& plan) {
     return ms;
 }
 
-// The lighting pass of a SAT scene, against the same scene lit from bilinearly fetched
-// filtered moments (its Gaussian passes are not timed). The SAT plan leaves out sat-resolve,
-// which only makes an image for inspection: lighting reads the table itself.
-BenchRow benchSatLighting(Renderer& r, const std::string& scenePath, int repeats) {
+// The lighting pass of a SAT scene at boxes of kSatBoxes texels, each against the same scene
+// lit from bilinearly fetched filtered moments (its Gaussian passes are not timed), all
+// interleaved in one loop; then the largest box against the smallest (the table's point: the
+// lookup costs the same for any box). The SAT plan leaves out sat-resolve, which only makes an
+// image for inspection: lighting reads the table itself.
+constexpr float kSatBoxes[] = {2, 8, 32, 128, 512};
+constexpr double kSatFlatGoal = 1.1;  // lighting at the largest box / at the smallest
+
+std::vector<BenchRow> benchSatLighting(Renderer& r, const std::string& scenePath, int repeats) {
     Scene sat = loadScene(scenePath);
     if (sat.shadow.filter != FilterKind::Sat)
         throw std::runtime_error(scenePath + ": \"shadow.filter.type\": the lighting benchmark "
@@ -122,6 +127,11 @@ BenchRow benchSatLighting(Renderer& r, const std::string& scenePath, int repeats
     const PassPlan fullSatPlan = planPasses(sat, {.resolveSat = true});
     const PassPlan satPlan = planPasses(sat);
     const PassPlan bilinearPlan = planPasses(bilinear);
+    std::vector<Scene> boxes;
+    for (float box : kSatBoxes) {
+        boxes.push_back(sat);
+        boxes.back().shadow.satKernelTexels = box;
+    }
 
     // Warm-up (compiles), and the stub check on the full plan (sat-resolve calls the lookup).
     bool implemented = true;
@@ -130,13 +140,28 @@ BenchRow benchSatLighting(Renderer& r, const std::string& scenePath, int repeats
             note.find("sat_lookup.glsl") != std::string::npos)
             implemented = false;
     r.render(bilinear, bilinearPlan);
-    std::vector<double> satMs, bilinearMs;
+    std::vector<double> bilinearMs;
+    std::vector<std::vector<double>> boxMs(boxes.size());
     for (int rep = 0; rep < repeats; ++rep) {
         bilinearMs.push_back(lightingMillis(r.render(bilinear, bilinearPlan), bilinearPlan));
-        satMs.push_back(lightingMillis(r.render(sat, satPlan), satPlan));
+        for (size_t b = 0; b < boxes.size(); ++b)
+            boxMs[b].push_back(lightingMillis(r.render(boxes[b], satPlan), satPlan));
     }
-    return makeRow("sat lookup, lighting pass (" + sat.name + ")", satMs, bilinearMs, 1,
-                   "bilinear fetch", kSatLightingGoal, implemented);
+    std::vector<BenchRow> rows;
+    for (size_t b = 0; b < boxes.size(); ++b) {
+        char name[160];
+        std::snprintf(name, sizeof name, "sat lookup, box %g, lighting pass (%s)",
+                      double(kSatBoxes[b]), sat.name.c_str());
+        rows.push_back(makeRow(name, boxMs[b], bilinearMs, 1, "bilinear fetch", kSatLightingGoal,
+                               implemented));
+    }
+    char name[160], baseline[64];
+    std::snprintf(name, sizeof name, "sat lookup, box %g / box %g, lighting pass",
+                  double(kSatBoxes[boxes.size() - 1]), double(kSatBoxes[0]));
+    std::snprintf(baseline, sizeof baseline, "sat lookup, box %g", double(kSatBoxes[0]));
+    rows.push_back(makeRow(name, boxMs.back(), boxMs.front(), 1, baseline, kSatFlatGoal,
+                           implemented));
+    return rows;
 }
 
 }  // namespace
@@ -161,7 +186,8 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
         p[0] = z, p[1] = z * z, p[2] = z * z * z, p[3] = z * z * z * z;
     }
     Texture src = Texture::create(size, size, GL_RGBA32F);
-    Texture mid = Texture::create(size, size, GL_RGBA32F);
+    Texture mid = Texture::create(satTableWidth(size), size, GL_RGBA32F);
+    Texture table = Texture::create(satTableWidth(size), size, GL_RGBA32F);
     Texture dst = Texture::create(size, size, GL_RGBA32F);
     src.upload(moments);
 
@@ -181,7 +207,7 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
     cases.push_back({"sat, rows + columns",
                      [&] {
                          r.satPass(src, mid, {1, 0});
-                         r.satPass(mid, dst, {0, 1});
+                         r.satPass(mid, table, {0, 1});
                      },
                      2, kSatGoal});
 
@@ -228,7 +254,8 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
     for (size_t i = 0; i < cases.size(); ++i)
         addRow(cases[i].name, caseMs[i], cases[i].copies, cases[i].goal, cases[i].implemented);
     if (!options.lightingScene.empty())
-        report.rows.push_back(benchSatLighting(r, options.lightingScene, repeats));
+        for (BenchRow& row : benchSatLighting(r, options.lightingScene, repeats))
+            report.rows.push_back(std::move(row));
     return report;
 }
 

@@ -98,10 +98,11 @@ void Renderer::satPass(const Texture& src, const Texture& dst, glm::ivec2 direct
     GlProgram& p = passProgram(PassKind::SatRows, 0, {});
     p.use();
     p.set("uDirection", direction);
-    p.set("uImageSize", glm::ivec2(src.width, src.height));
+    const glm::ivec2 map(dst.width / satTableWidth(1), dst.height);  // the moment map's size
+    p.set("uImageSize", map);
     gl::BindImageTexture(0, src.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    dispatchLines(p, {src.width, src.height}, direction, true);
+    dispatchLines(p, map, direction, true);
 }
 
 void Renderer::satResolvePass(const Texture& sat, const Texture& dst, float kernelTexels) {
@@ -112,8 +113,8 @@ void Renderer::satResolvePass(const Texture& sat, const Texture& dst, float kern
     gl::BindTextureUnit(0, sat.id());
     gl::BindImageTexture(1, dst.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     const glm::ivec3 local = p.workGroupSize();
-    gl::DispatchCompute(GLuint((sat.width + local.x - 1) / local.x),
-                        GLuint((sat.height + local.y - 1) / local.y), 1);
+    gl::DispatchCompute(GLuint((dst.width + local.x - 1) / local.x),
+                        GLuint((dst.height + local.y - 1) / local.y), 1);
     gl::MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

@@ -121,8 +121,9 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
     }
     char why[64];
     std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
-    rgba32f(TextureRole::Scratch);
-    rgba32f(TextureRole::Sat);
+    // The table has two texels per entry (satTableWidth).
+    for (TextureRole role : {TextureRole::Scratch, TextureRole::Sat})
+        add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, satTableWidth(n), n, map.layers, 16));
     pass({PassKind::SatRows, i, -1, why, TextureRole::Scratch});
     pass({PassKind::SatColumns, i, -1, why, TextureRole::Sat});
     if (options.resolveSat) {

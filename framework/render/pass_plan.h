@@ -36,6 +36,9 @@ enum class TextureRole { Depth, Raw, Second, Wide, Scratch, Filtered, Sat, Color
 // "depth", "raw", "second", "wide", "scratch", "filtered", "sat", "color", "shadow",
 // "camera-depth" (--explain, render.json).
 const char* toString(TextureRole);
+// Width of sat.comp's table for a map `mapWidth` texels wide: two texels per entry, so that an
+// entry can hold a sum exactly enough for any box (docs/stage_contract.md).
+inline int satTableWidth(int mapWidth) { return 2 * mapWidth; }
 
 struct PlannedTexture {
     int light = -1;

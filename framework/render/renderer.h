@@ -91,6 +91,8 @@ public:
     void widenPass(const Texture& src, const Texture& dst);
     void gaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
                       glm::ivec2 direction);
+    // One pass of sat.comp. The table (dst; src of the column pass) is satTableWidth(W) × H
+    // for a W × H map (pass_plan.h).
     void satPass(const Texture& src, const Texture& dst, glm::ivec2 direction);
     void satResolvePass(const Texture& sat, const Texture& dst, float kernelTexels);
 

@@ -170,7 +170,9 @@ void runWorker(const WorkerArgs& a) {
         // The building blocks on the reference moments; first shadowing light only.
         Image input = readAnyImage(a.input);
         Texture src = Texture::create(input.width, input.height, GL_RGBA32F);
-        Texture scratch = Texture::create(input.width, input.height, GL_RGBA32F);
+        const bool sat = is(a, Stage::Sat);  // sat.comp's table: two texels per entry
+        Texture scratch = Texture::create(sat ? satTableWidth(input.width) : input.width,
+                                          input.height, GL_RGBA32F);
         Texture dst = Texture::create(input.width, input.height, GL_RGBA32F);
         src.upload(input);
         const ShadowEffect& fx = scene.shadow;
@@ -178,7 +180,8 @@ void runWorker(const WorkerArgs& a) {
             renderer.gaussianPass(src, scratch, fx.gaussianRadius, fx.gaussianSigma, {1, 0});
             renderer.gaussianPass(scratch, dst, fx.gaussianRadius, fx.gaussianSigma, {0, 1});
         } else {
-            Texture table = Texture::create(input.width, input.height, GL_RGBA32F);
+            Texture table = Texture::create(satTableWidth(input.width), input.height,
+                                            GL_RGBA32F);
             renderer.satPass(src, scratch, {1, 0});
             renderer.satPass(scratch, table, {0, 1});
             renderer.satResolvePass(table, dst, fx.satKernelTexels);

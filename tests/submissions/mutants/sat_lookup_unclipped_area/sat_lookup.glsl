@@ -67,7 +67,7 @@ vec4 satInteriorBelow(sampler2D sat, vec2 e, ivec2 size)
 //     (x+1)(y+1)·a:    area·a, so a is added to the mean exactly.
 vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
 {
-    ivec2 size = textureSize(sat, 0);
+    ivec2 size = textureSize(sat, 0) / ivec2(2, 1);  // the map: the table has two texels per entry
     vec2 lo = clamp(center - 0.5 * boxSize, vec2(0.0), vec2(size));
     vec2 hi = clamp(center + 0.5 * boxSize, vec2(0.0), vec2(size));
     vec2 extent = hi - lo;
