@@ -1,6 +1,6 @@
 // cli_bench: `shadowlab bench`: times a solution's filter passes against a copy pass (the
-// verdict's yardstick, issue 10) and a tiled copy (the column "tiled": what moving the texels
-// costs on llvmpipe), and its SAT lookup's lighting pass against a bilinear fetch
+// verdict's yardstick, docs/performance.md) and a tiled copy (the column "tiled": what moving the
+// texels costs on llvmpipe), and its SAT lookup's lighting pass against a bilinear fetch
 // (filter_benchmark.h, docs/performance.md).
 //   --json          print the figures as JSON instead of the table
 //   --json FILE     also write them to FILE

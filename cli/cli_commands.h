@@ -17,7 +17,7 @@ struct Context {
     int exitCode = Ok;
 };
 
-void addRenderCommands(CLI::App& app, Context& ctx);  // render, bench, info
+void addRenderCommands(CLI::App& app, Context& ctx);  // render, info, bench, compare
 void addViewCommand(CLI::App& app, Context& ctx);    // view (cli_view.cpp, GLFW window)
 void addProbeCommand(CLI::App& app, Context& ctx);    // probe (cli_probe.cpp)
 void addStudyCommands(CLI::App& app, Context& ctx);   // study, truth (cli_study.cpp)

@@ -1,6 +1,6 @@
-// Fair grades (issue 7 §2): the "either" filter mode with one-filter submissions, points that
-// add up exactly (displayed points, status and totals agree), the worst-texel rule naming the
-// texel, and a stubbed relativeDepth reported as not implemented.
+// Fair grades (a grade must be fair and explainable): the "either" filter mode with one-filter
+// submissions, points that add up exactly (displayed points, status and totals agree), the
+// worst-texel rule naming the texel, and a stubbed relativeDepth reported as not implemented.
 #include "test_grader_support.h"
 
 #include <cmath>

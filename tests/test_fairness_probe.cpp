@@ -1,7 +1,7 @@
-// A student can reproduce every failing case (issue 7 §2): probe sat-lookup prints the exact
-// box means next to the solution's and says whether the box sits on texel centres; the box set
-// fits any --map-size; the robustness stage's zf ladder and the moments stage's relativeDepth
-// ladder can be written with `probe --generate`.
+// A student can reproduce every failing case (a grade must be fair and explainable): probe
+// sat-lookup prints the exact box means next to the solution's and says whether the box sits on
+// texel centres; the box set fits any --map-size; the robustness stage's zf ladder and the moments
+// stage's relativeDepth ladder can be written with `probe --generate`.
 #include "depth_ladder.h"
 #include "gl_test_support.h"
 #include "probe_cases.h"

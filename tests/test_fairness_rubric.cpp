@@ -1,6 +1,7 @@
-// The rubric is validated like a scene (issue 7 §6): an unknown key, a stage typed "gausian",
-// a visibility Gradescope does not know or a ramp upside down is an error naming the file, the
-// JSON path and what was expected, written to results.json, before anything renders.
+// The rubric is validated like a scene (a typo in the rubric must not grade silently): an unknown
+// key, a stage typed "gausian", a visibility Gradescope does not know or a ramp upside down is an
+// error naming the file, the JSON path and what was expected, written to results.json, before
+// anything renders.
 #include "rubric.h"
 #include "test_grader_support.h"
 

@@ -214,8 +214,8 @@ TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
     EXPECT_NE(g.run.output.find("away from texel (0, 0)"), std::string::npos) << g.run.output;
 }
 
-// The robustness stage (issue 4): the fragile variants of msm.glsl lose points there, with the
-// failing hard cases and their inputs listed; the reference scores full.
+// The robustness stage (hard cases a fragile MSM must fail): the fragile variants of msm.glsl lose
+// points there, with the failing hard cases and their inputs listed; the reference scores full.
 TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
     const std::vector<std::string> variants = {"mutants/msm_no_moment_bias", "fragile/unguarded"};
     std::map<std::string, fs::path> subs;  // both in one --batch: one reference render

@@ -1,7 +1,7 @@
-// Hostile input, issue 7 §4: in `grade --batch`, submissions were graded on threads of one
-// process, so one submission that crashed the grader lost every student's grade. Each
-// submission is graded by its own child process now: a crash costs that submission only, and
-// it still gets a results.json and a row in scores.csv saying why.
+// Hostile input (one submission may not cost another its grade): in `grade --batch`, submissions
+// were graded on threads of one process, so one submission that crashed the grader lost every
+// student's grade. Each submission is graded by its own child process now: a crash costs that
+// submission only, and it still gets a results.json and a row in scores.csv saying why.
 #include "test_grader_support.h"
 
 namespace sl {

@@ -1,6 +1,7 @@
-// Hostile input, issue 7 §2: #include respects #if/#ifdef. lighting.frag includes
-// sat_lookup.glsl under #ifdef SL_FILTER_SAT; expanded line by line, a Gaussian scene compiled
-// the SAT lookup too, and a broken sat_lookup.glsl cost `final` on scenes that use no SAT.
+// Hostile input (a broken file costs only the scenes that use it): #include respects #if/#ifdef.
+// lighting.frag includes sat_lookup.glsl under #ifdef SL_FILTER_SAT; expanded line by line, a
+// Gaussian scene compiled the SAT lookup too, and a broken sat_lookup.glsl cost `final` on scenes
+// that use no SAT.
 #include "test_grader_support.h"
 
 #include "glsl_scan.h"

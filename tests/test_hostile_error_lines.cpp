@@ -1,9 +1,9 @@
-// Hostile input, issue 7 §4: errors point at the student's file and line. Mesa 22.3 reports
-// semantic errors with source string 0 whatever `#line N file` said, so an undeclared name in
-// msm.glsl was blamed on shaders/lighting.frag. The assembled text is one source string now,
-// mapped back by its line table. Checked with a semantic error (not a syntax error) in every
-// stage file, compiled by the renderer as a scene uses it; and #line / #extension, which would
-// spoof or break the mapping, are refused with a clear message.
+// Hostile input (nothing a student submits may crash or mislead the grader): errors point at the
+// student's file and line. Mesa 22.3 reports semantic errors with source string 0 whatever `#line N
+// file` said, so an undeclared name in msm.glsl was blamed on shaders/lighting.frag. The assembled
+// text is one source string now, mapped back by its line table. Checked with a semantic error (not
+// a syntax error) in every stage file, compiled by the renderer as a scene uses it; and #line /
+// #extension, which would spoof or break the mapping, are refused with a clear message.
 #include "test_grader_support.h"
 
 #include "shader_source.h"

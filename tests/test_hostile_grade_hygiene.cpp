@@ -1,8 +1,8 @@
-// Hostile input, issue 7 §4 (smaller): what a grade leaves behind and shows. Workers share a
-// Mesa shader cache in the grade's own work folder, OUT/.work-<pid>/shader-cache (never the
-// user's cache: that was the only write outside OUT, and would share programs between
-// grades), and no student-visible message holds the grader's absolute paths (the kit, OUT,
-// the staging folder).
+// Hostile input (a grade writes only under its output folder): what a grade leaves behind and
+// shows. Workers share a Mesa shader cache in the grade's own work folder,
+// OUT/.work-<pid>/shader-cache (never the user's cache: that was the only write outside OUT, and
+// would share programs between grades), and no student-visible message holds the grader's absolute
+// paths (the kit, OUT, the staging folder).
 #include "test_grader_support.h"
 
 namespace sl {

@@ -1,6 +1,7 @@
-// Hostile input, issue 7 §6 (intake): uploads often keep their folder, so the stage files sit
-// in submission/<folder>/*.glsl. That scored 0 ("ignored (not stage files): <folder>"); one
-// level of nesting is accepted now, when the top holds no stage file and exactly one folder.
+// Hostile input (intake: a correct submission must get its points): uploads often keep their
+// folder, so the stage files sit in submission/<folder>/*.glsl. That scored 0 ("ignored (not stage
+// files): <folder>"); one level of nesting is accepted now, when the top holds no stage file and
+// exactly one folder.
 #include "test_grader_support.h"
 
 namespace sl {

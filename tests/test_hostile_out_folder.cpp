@@ -1,8 +1,8 @@
-// Hostile input, issue 7 §4: the grader's output folder. `--out` equal to the submission
-// deleted the student's report/ folder; a results.json.tmp link there was followed (an
-// arbitrary file write); `--out scenes/` broke every later grade. OUT may not be, contain or
-// lie inside the submission, scenes/, reference/ or the goldens; files are written through
-// fresh O_EXCL | O_NOFOLLOW temp files; an OUT that is a file is a clear error.
+// Hostile input (the grader writes only under its output folder): the grader's output folder.
+// `--out` equal to the submission deleted the student's report/ folder; a results.json.tmp link
+// there was followed (an arbitrary file write); `--out scenes/` broke every later grade. OUT may
+// not be, contain or lie inside the submission, scenes/, reference/ or the goldens; files are
+// written through fresh O_EXCL | O_NOFOLLOW temp files; an OUT that is a file is a clear error.
 #include "test_grader_support.h"
 
 namespace sl {

@@ -1,7 +1,8 @@
-// Hostile input, issue 7 §4: scene files. Values that pass the double checks but become inf
-// or 0 as floats (translate 1e308, far 1e308, a spot depthRange near 1e-300) rendered a blank
-// image with exit 0; a description nested 100 000 arrays deep crashed the process that built
-// the error message; a FIFO blocked forever and a directory was "invalid JSON at line 1".
+// Hostile input (nothing a student submits may crash the grader): scene files. Values that pass the
+// double checks but become inf or 0 as floats (translate 1e308, far 1e308, a spot depthRange near
+// 1e-300) rendered a blank image with exit 0; a description nested 100 000 arrays deep crashed the
+// process that built the error message; a FIFO blocked forever and a directory was "invalid JSON at
+// line 1".
 #include "scene.h"
 
 #include "gl_test_support.h"

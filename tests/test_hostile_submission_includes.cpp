@@ -1,8 +1,8 @@
-// Hostile input, issue 7 §2: a submission's own include files. docs/stage_contract.md lets a
-// stage file #include "other.glsl" next to it; the grader used to drop every non-stage file,
-// so a correct SAT pair sharing a header lost the sat stage and every final test. Helpers are
-// taken (bounded in count and size, no links, bare names only) and resolved inside the
-// submission folder and shaders/ only.
+// Hostile input (a correct submission must get its points): a submission's own include files.
+// docs/stage_contract.md lets a stage file #include "other.glsl" next to it; the grader used to
+// drop every non-stage file, so a correct SAT pair sharing a header lost the sat stage and every
+// final test. Helpers are taken (bounded in count and size, no links, bare names only) and resolved
+// inside the submission folder and shaders/ only.
 #include "test_grader_support.h"
 
 namespace sl {

@@ -1,4 +1,4 @@
-// Hostile input, issue 7 §4 (smaller): a test's name is the same for every submission
+// Hostile input (Gradescope matches tests by name): a test's name is the same for every submission
 // (Gradescope matches tests by name): the robustness test is "hard cases: robustness" whether
 // msm.glsl was graded or missing (it was "classic: robustness" then); and `--scenes a,a`
 // grades a once.

@@ -1,9 +1,9 @@
-// Hostile input, issue 7 §4: time limits. A fixed 20 s limit gave a 1e9-iteration render 0 on
-// a busy machine and full marks on an idle one, and a loop in msm.glsl cost 20 s per scene.
-// The limit is now kTimeoutFactor (10) x the reference's own render of the scene, timed on the same
-// machine in the same run (at least kTimeoutFloor s), and a stage that timed out once is not
-// run again on the other scenes, nor are the finals that run its files: those tests get the
-// same reason at once.
+// Hostile input (the same work gets the same grade on any machine): time limits. A fixed 20 s limit
+// gave a 1e9-iteration render 0 on a busy machine and full marks on an idle one, and a loop in
+// msm.glsl cost 20 s per scene. The limit is now kTimeoutFactor (10) x the reference's own render
+// of the scene, timed on the same machine in the same run (at least kTimeoutFloor s), and a stage
+// that timed out once is not run again on the other scenes, nor are the finals that run its files:
+// those tests get the same reason at once.
 #include "test_grader_support.h"
 
 #include <chrono>

@@ -1,6 +1,6 @@
-// Hidden goldens (issue 7, §6): `golden --scenes <hidden scene>` writes into goldens/ next to
-// the hidden scene's file, never into the public folder (which ships to students); a
-// manifest is merged, never silently cut down to the scenes of one run; grade finds a hidden
+// Hidden goldens (hidden scenes never reach students): `golden --scenes <hidden scene>` writes into
+// goldens/ next to the hidden scene's file, never into the public folder (which ships to students);
+// a manifest is merged, never silently cut down to the scenes of one run; grade finds a hidden
 // scene's goldens; `golden --check` checks the scenes it is given and its advice names them.
 #include "test_grader_support.h"
 

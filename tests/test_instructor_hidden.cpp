@@ -1,7 +1,7 @@
-// Hidden scenes (issue 7, §4 and §6): a hidden scene's tests reach results.json with their own
-// visibility, but nothing a student sees before the due date names the scene, shows its
-// errors or counts its points: the score table on stdout, results.json's top-level output,
-// the warnings, report/. `--help` for --scenes mentions the keyword "public".
+// Hidden scenes (hidden from students until the due date): a hidden scene's tests reach
+// results.json with their own visibility, but nothing a student sees before the due date names the
+// scene, shows its errors or counts its points: the score table on stdout, results.json's top-level
+// output, the warnings, report/. `--help` for --scenes mentions the keyword "public".
 #include "test_grader_support.h"
 
 #include "results.h"

@@ -1,8 +1,8 @@
-// Scene probes (issue 7, §6): `shadowlab project` finds the pixel and the light's verdict of a
-// world point, checked against every public probe (whose pixels and values the scenes' authors
-// worked out by hand, docs/scenes.md); and a probe that does not hold on the reference render
-// is an error in `golden` (naming the file, the probe and the values, writing nothing) and in
-// `grade` (which then does not grade on that scene).
+// Scene probes (an instructor checks a scene by hand): `shadowlab project` finds the pixel and the
+// light's verdict of a world point, checked against every public probe (whose pixels and values the
+// scenes' authors worked out by hand, docs/scenes.md); and a probe that does not hold on the
+// reference render is an error in `golden` (naming the file, the probe and the values, writing
+// nothing) and in `grade` (which then does not grade on that scene).
 #include "test_grader_support.h"
 
 #include <regex>

@@ -1,8 +1,8 @@
-// The report for a regrade (issue 7, §6): a per-stage summary at the top; known failure
-// patterns in words (a red frame on the border, the moment bias, failures only on SAT scenes,
-// NaN); metrics as tables, not JSON dumps; previews that link full-size images; hidden scenes
-// left out of report/ (images included) and marked in the staff page. The synthetic summaries
-// below are unit tests of the page; the last test grades two real mutants.
+// The report for a regrade (what an instructor needs to regrade): a per-stage summary at the top;
+// known failure patterns in words (a red frame on the border, the moment bias, failures only on SAT
+// scenes, NaN); metrics as tables, not JSON dumps; previews that link full-size images; hidden
+// scenes left out of report/ (images included) and marked in the staff page. The synthetic
+// summaries below are unit tests of the page; the last test grades two real mutants.
 #include "test_grader_support.h"
 
 #include "image_io.h"

@@ -1,5 +1,6 @@
-// The student kit attacked as a student would (issue 20 §4): pack it, unpack it, and look in
-// everything it ships outside student/ for something to hand in as a stage.
+// The student kit attacked as a student would (the kit must not ship anything that passes as a
+// stage): pack it, unpack it, and look in everything it ships outside student/ for something to
+// hand in as a stage.
 //  - Stages: every function whose signature could stand in for a stage function (GLSL files,
 //    the code blocks of its Markdown, and C++ translated line by line to GLSL), and every compute
 //    shader with a filter stage's bindings, goes into a copy of the stubs as that stage (with the

@@ -1,9 +1,9 @@
-// `./kit deps --check` (issue 7 §1): the derived package check. It runs the tracing tool
-// (../shared/tools/fresh-deps, or $SHADOWLAB_FRESH_DEPS) twice, against PACKAGES and against
-// the autograder's GRADER_PACKAGES, fails when the tool names a missing package, and only warns
-// when the tool cannot run (no strace, no tool): CI must not fail for a missing strace.
-// Stand-in tools with the real one's exit codes (0 covered, 1 missing, 2 could not run) test the
-// wiring; .ci/run runs the real one after the build.
+// `./kit deps --check` (a fresh machine must find every package the kit needs): the derived package
+// check. It runs the tracing tool (../shared/tools/fresh-deps, or $SHADOWLAB_FRESH_DEPS) twice,
+// against PACKAGES and against the autograder's GRADER_PACKAGES, fails when the tool names a
+// missing package, and only warns when the tool cannot run (no strace, no tool): CI must not fail
+// for a missing strace. Stand-in tools with the real one's exit codes (0 covered, 1 missing, 2
+// could not run) test the wiring; .ci/run runs the real one after the build.
 #include "kit_test_support.h"
 
 namespace sl {
@@ -56,8 +56,9 @@ TEST(KitDeps, AToolThatCannotRunOnlyWarns) {
 
 namespace sl {
 
-// Issue 10: benchmarks (suites named Bench*) carry the CTest label `bench`; `./kit test` runs
-// `ctest -LE bench` and so never times anything, `./kit bench` runs `ctest -L bench`.
+// Timing belongs in benchmarks, never in the test run: benchmarks (suites named Bench*) carry the
+// CTest label `bench`; `./kit test` runs `ctest -LE bench` and so never times anything, `./kit
+// bench` runs `ctest -L bench`.
 TEST(KitBenchLabel, BenchSuitesAreLabelledAndLeftOutOfTheTestRun) {
     // CTest writes Testing/Temporary/LastTest.log even to list tests, and the suite's own log
     // is there while it runs: list from a copy of the build's test files (their includes of

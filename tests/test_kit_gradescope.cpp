@@ -1,7 +1,8 @@
-// The Gradescope autograder (issue 7 §5): `shadowlab package --kind gradescope` unzipped into an
-// /autograder-shaped folder ($SHADOWLAB_AUTOGRADER replaces /autograder), setup.sh installs
-// only the autograder's packages and builds, run_autograder grades a correct submission to full
-// marks. Slow: a build of the kit (ccache hits when this build used it).
+// The Gradescope autograder (it must install and grade on Gradescope unattended): `shadowlab
+// package --kind gradescope` unzipped into an /autograder-shaped folder ($SHADOWLAB_AUTOGRADER
+// replaces /autograder), setup.sh installs only the autograder's packages and builds,
+// run_autograder grades a correct submission to full marks. Slow: a build of the kit (ccache hits
+// when this build used it).
 #include "kit_test_support.h"
 
 #include <nlohmann/json.hpp>

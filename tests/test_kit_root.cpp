@@ -1,6 +1,7 @@
 // The kit's root (paths.h): a copied kit grades from the copy, not from the checkout the
-// program was built from (issue 7 §6); `info` and `grade` say which root they use, and warn
-// when the program's build and the kit in use differ; $SHADOWLAB_ROOT still wins.
+// program was built from (a kit copied elsewhere must grade from where it is); `info` and `grade`
+// say which root they use, and warn when the program's build and the kit in use differ;
+// $SHADOWLAB_ROOT still wins.
 #include "kit_test_support.h"
 
 #include <unistd.h>

@@ -1,8 +1,9 @@
-// The student kit as a student gets it (issue 7 §3, §6; issue 20 §3): `shadowlab package --kind
-// student`, unpacked into its `shadowlab/` folder, holds exactly what grader/student_kit.manifest
-// names and no solution-bearing file, builds, and runs every command line its own README and
-// handout show. (KitAttack.* tries what it holds as stages.) Slow (a build of the kit; ccache makes the
-// compiles hits when this build used it): see docs/grading.md for the measured time.
+// The student kit as a student gets it (it must build and run as shipped and hold no solution):
+// `shadowlab package --kind student`, unpacked into its `shadowlab/` folder, holds exactly what
+// grader/student_kit.manifest names and no solution-bearing file, builds, and runs every command
+// line its own README and handout show. (KitAttack.* tries what it holds as stages.) Slow (a build
+// of the kit; ccache makes the compiles hits when this build used it): see docs/grading.md for the
+// measured time.
 #include "kit_test_support.h"
 #include "student_kit.h"
 

@@ -151,8 +151,8 @@ TEST(PassPlan, ExplainListsEveryPassWithItsTime) {
 
 }  // namespace sl
 
-// --- The technique ladder: what each row plans (expected values from the table in issue 8,
-// written out here, not read from the table under test). ---
+// --- The technique ladder: what each row plans (expected values from the
+// technique table's intent, written out here, not read from the table under test). ---
 namespace sl {
 namespace {
 

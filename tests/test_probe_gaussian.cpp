@@ -1,7 +1,8 @@
-// `shadowlab probe gaussian` (issue 20 §6): the solution's gaussian_blur.comp on small maps whose
-// sizes leave work groups partly outside the image, next to the contract's blur in double. The
-// reference matches within float rounding at every radius and pass; the catalogue's Gaussian
-// mutants and two made here (a wrong clamp, a missing weight) are caught; the stub is named.
+// `shadowlab probe gaussian` (a student can check their blur against the contract): the solution's
+// gaussian_blur.comp on small maps whose sizes leave work groups partly outside the image, next to
+// the contract's blur in double. The reference matches within float rounding at every radius and
+// pass; the catalogue's Gaussian mutants and two made here (a wrong clamp, a missing weight) are
+// caught; the stub is named.
 #include "gaussian_cases.h"
 #include "gaussian_exact.h"
 #include "gl_test_support.h"
@@ -121,7 +122,8 @@ TEST(ProbeGaussian, MutantsAreCaughtAndTheStubIsNamed) {
         cases.push_back({(mutants / m).string(), "--radius 4"});
     // Right only where sigma = r / 2.
     cases.push_back({(mutants / "gaussian_ignores_weights").string(), "--radius 4 --sigma 1.5"});
-    // Made here: a clamp one texel past the image (it reads 0 there), and the outermost weight missing.
+    // Made here: a clamp one texel past the image (it reads 0 there), and the outermost weight
+    // missing.
     cases.push_back({referenceMutant("probe_gaussian_wrong_clamp", "clamp(first + (i - R) * uDirection, ivec2(0), last)",
                                      "clamp(first + (i - R) * uDirection, ivec2(0), last + 1)"),
                      "--radius 4"});

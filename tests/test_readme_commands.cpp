@@ -97,7 +97,7 @@ TEST(ReadmeCommands, LinksToASectionFindItsHeading) {
     EXPECT_GE(links, 3);
 }
 
-// README: `build/shadowlab render ... --backend egl` (issue 7 §1): the option after the
+// README: `build/shadowlab render ... --backend egl` (as the README shows it): the option after the
 // subcommand, on every subcommand that renders, and before it as before.
 TEST(ReadmeCommands, BackendIsAcceptedBeforeAndAfterEverySubcommandThatRenders) {
     const std::string bin = test::shadowlabBinary();

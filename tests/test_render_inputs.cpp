@@ -1,7 +1,7 @@
 // RenderInputs (renderer.h): a light's raw shadow map read back from one render and fed into
 // another stands in for the shadow pass bit-exactly, in every map format (R32F depth, RG32F,
 // RGBA32F moments, RGBA16 quantised moments, CSM's layers, second-depth's peeled map), and
-// the filter passes and lighting still run on it. This is what lets issue 9's sweep render a
+// the filter passes and lighting still run on it. This is what lets the technique sweep render a
 // shadow map once per (scene, light, size, format) and share it between techniques.
 #include "gl_test_support.h"
 #include "technique.h"

@@ -1,4 +1,4 @@
-// The technique ladder on rendered images (issue 8's "tests that can fail"):
+// The technique ladder on rendered images (tests that can fail when a technique is wrong):
 //  - bound properties per pixel, same map and kernel: VSM's and EVSM's lit fraction is at least
 //    the exact filtered visibility (Gaussian PCF of the same depths), MSM's G at most it;
 //  - hard shadows of a box on a plane match the analytic outline wherever the outline is more

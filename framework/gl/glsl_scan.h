@@ -1,7 +1,7 @@
 // glsl_scan: plain, linear scanners for the GLSL text students submit and the logs drivers
 // write. No std::regex here on purpose: libstdc++'s regex recurses once per character and a
-// 40 000-character line overflows the stack (issue 7). Every loop is bounded by its input;
-// every recursion (the #if expression evaluator) by a fixed depth.
+// 40 000-character line overflows the stack (no submitted text may crash the grader). Every loop is
+// bounded by its input; every recursion (the #if expression evaluator) by a fixed depth.
 //
 // What ShaderLibrary needs from a line: is it a preprocessor directive, which one, and its
 // argument; and, to decide which #include lines to expand, the value of #if/#ifdef/#elif

@@ -94,7 +94,7 @@ private:
     int texels_;
 };
 
-// The goals of issue 10 / docs/performance.md, per pass (ratios to copy passes).
+// The goals of docs/performance.md, per pass (ratios to copy passes).
 double gaussianGoal(int radius) { return radius == 8 ? 1.3 : radius == 16 ? 2.0 : 0.0; }
 constexpr double kSatGoal = 1.5;          // both passes vs two copy passes
 constexpr double kSatLightingGoal = 1.2;  // lighting with SAT lookup vs bilinear fetch

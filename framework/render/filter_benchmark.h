@@ -1,12 +1,12 @@
 // filter_benchmark: times the filter passes against copy passes over the same texture, in
 // the same run, as CPU time of all the process's threads around glFinish (cost_clock.h: a core
-// another process holds does not make a pass look slower), and reports medians, spreads and a verdict against the goals of
-// docs/performance.md (machines are noisy and differ; ratios measured in one run travel).
-// Two floors: the copy of issue 10's goals (copy.comp, one texel per invocation), which the
-// verdict is against, and a tiled copy (copy_tile.comp, 4 texels of a row per invocation, the
-// fastest copy measured on llvmpipe). The one-texel copy is bound by the cost of running
-// invocations and work groups rather than by memory, so a tiled filter can run under 1.0 of
-// it; the ratio to the tiled copy says how far a pass is from what moving the texels costs.
+// another process holds does not make a pass look slower), and reports medians, spreads and a
+// verdict against the goals of docs/performance.md (machines are noisy and differ; ratios measured
+// in one run travel). Two floors: the copy the goals are ratios to (copy.comp, one texel per
+// invocation), which the verdict is against, and a tiled copy (copy_tile.comp, 4 texels of a row
+// per invocation, the fastest copy measured on llvmpipe). The one-texel copy is bound by the cost
+// of running invocations and work groups rather than by memory, so a tiled filter can run under 1.0
+// of it; the ratio to the tiled copy says how far a pass is from what moving the texels costs.
 #pragma once
 
 #include "renderer.h"

@@ -45,8 +45,9 @@ struct RenderInputs {
     // passes and lighting run as planned. The map must come from a scene with the same
     // geometry, light, map size and technique format (same `mapLayout`): the shadow map of a
     // (scene, light, size, format) is then rendered once and shared by every technique and
-    // filter that reads that format (issue 9's sweep). Sizes, layers and channels are
-    // checked (std::invalid_argument); that it is the same scene is the caller's promise.
+    // filter that reads that format (the technique sweep renders each map once). Sizes, layers and
+    // channels are checked (std::invalid_argument); that it is the same scene is the caller's
+    // promise.
     std::map<int, RawShadowMap> rawMaps;
     // Fill RenderResult::rawMaps with every shadowing light's raw map (one extra read-back
     // per light; off by default because a 2048² RGBA32F map is 64 MiB).

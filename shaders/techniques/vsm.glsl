@@ -7,7 +7,7 @@
 //            light bleeding of stacked occluders at the cost of thinner penumbrae
 //   G = 1 − reduce(p_max)
 // With bleedReduction = 0 and minVariance ≈ 0, 1 − G ≥ the exact filtered visibility (PCF with
-// the same kernel): tests/test_technique_bounds.cpp checks it per pixel.
+// the same kernel): tests/test_technique_renders.cpp (TechniqueBounds) checks it per pixel.
 #ifndef SL_PROBE
 uniform float uMinVariance;
 uniform float uBleedReduction;
