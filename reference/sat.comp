@@ -58,7 +58,7 @@ dvec4 loadEntry(bool alongRows, int line, int x)
 // Stores a sum as its nearest float and the float nearest the rest.
 void storeEntry(ivec2 entry, dvec4 sum)
 {
-    vec4 high = vec4(sum);
+    precise vec4 high = vec4(sum);  // precise: else a compiler may fold sum - double(float(sum)) to 0
     imageStore(uDestination, ivec2(2 * entry.x, entry.y), high);
     imageStore(uDestination, ivec2(2 * entry.x + 1, entry.y), vec4(sum - dvec4(high)));
 }
