@@ -3,6 +3,7 @@
 // options live here too: --backend is accepted before the subcommand and on every subcommand
 // that renders; the kit's root (paths.h) is reported by info and grade.
 #include "cli_commands.h"
+#include "codec_child.h"
 #include "gl_context.h"
 #include "huge_pages.h"
 #include "paths.h"
@@ -10,6 +11,7 @@
 #include "shader_source.h"
 
 #include <cstdlib>
+#include <unistd.h>
 #include <iostream>
 #include <set>
 
@@ -32,6 +34,13 @@ void addBackendOption(CLI::App& app, std::string& backend) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The image codec's child (codec_child.h): not a user command, no parsing, no re-exec.
+    // Its answers own stdout; whatever a library prints goes to stderr.
+    if (argc == 2 && std::string(argv[1]) == "codec-server") {
+        const int answers = ::dup(1);
+        ::dup2(2, 1);
+        return sl::serveCodec(0, answers, sl::moduleCodec());
+    }
     sl::cli::useHugePages(argc, argv);  // may re-execute this program once (huge_pages.h)
     CLI::App app{"Shadowlab: filtered moment shadow maps on Mesa's software rasterizer"};
     app.require_subcommand(1);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace sl::test {
 namespace {
@@ -99,6 +100,44 @@ TEST(ImageCodec, ComparisonFiguresAreMeanRmsAndMaxOfTheDifference) {
     EXPECT_NEAR(f.mean, 0.1875, 1e-6);
     EXPECT_NEAR(f.rms, std::sqrt((0.0625 + 0.25) / 4), 1e-6);
     EXPECT_NEAR(f.max, 0.5, 1e-6);
+}
+
+// SHADOWLAB_CODEC=child (codec_child.h, what the exact cost mode runs with): the program itself
+// never loads OpenImageIO, a child it starts does, and the files are the same bytes.
+TEST(ImageCodec, TheChildCodecKeepsOpenImageIOOutOfTheProgramAndWritesTheSameBytes) {
+    const fs::path dir = tempDir("image_codec_child");
+    const std::string render = shadowlabBinary() + " render --scene " +
+                               scenePath("classic").string() + " --out ";
+    const auto own = runCommand(render + (dir / "own").string());
+    ASSERT_EQ(own.exitCode, 0) << own.output;
+    const auto child = runCommand("SHADOWLAB_CODEC=child LD_DEBUG=files " + render +
+                                  (dir / "child").string() + " 2>&1");
+    ASSERT_EQ(child.exitCode, 0) << child.output.substr(child.output.size() - 2000);
+    // LD_DEBUG's lines start with the process id: the first is the program's.
+    std::istringstream lines(child.output);
+    std::string line, programPid;
+    bool programLoads = false, childLoads = false;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string pid;
+        words >> pid;
+        if (pid.empty() || pid.back() != ':') continue;
+        if (programPid.empty()) programPid = pid;
+        if (line.find("libOpenImageIO") == std::string::npos) continue;
+        (pid == programPid ? programLoads : childLoads) = true;
+    }
+    EXPECT_FALSE(programPid.empty()) << "LD_DEBUG gave no file list";
+    EXPECT_FALSE(programLoads) << "the program loaded OpenImageIO itself";
+    EXPECT_TRUE(childLoads) << "no child loaded OpenImageIO";
+    int compared = 0;
+    for (const auto& e : fs::directory_iterator(dir / "own")) {
+        const std::string ext = e.path().extension().string();
+        if (ext != ".exr" && ext != ".png") continue;
+        ++compared;
+        EXPECT_EQ(sha256File(e.path()), sha256File(dir / "child" / e.path().filename()))
+            << e.path().filename();
+    }
+    EXPECT_GE(compared, 4);
 }
 
 TEST(ImageCodec, AProgramWithoutTheModuleNamesIt) {

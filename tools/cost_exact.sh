@@ -3,8 +3,9 @@
 # pass's instructions, all threads, counted by valgrind's callgrind (framework/render/cost_clock.h),
 # which the host's load cannot change. About 50× slower than the CPU clock: for small sweeps.
 #   tools/cost_exact.sh SHADOWLAB bench|study [options...]
-# `study` stops under valgrind 3.19 (SIGILL at an rdtscp in libhwy, which OpenImageIO loads
-# when the first image is written): the bench, which writes no image, runs.
+# OpenImageIO runs in a child process the program starts (SHADOWLAB_CODEC=child,
+# framework/render/codec_child.h): valgrind does not follow it there, and it must not: libhwy,
+# which OpenImageIO loads, executes an rdtscp valgrind 3.19 stops at on this VM's CPU.
 set -euo pipefail
 BIN="$1"; shift
 command -v valgrind > /dev/null || { echo "cost_exact.sh: valgrind is not installed (apt-get install valgrind)" >&2; exit 2; }
@@ -12,7 +13,8 @@ DUMPS="$(mktemp -d)"
 trap 'rm -rf "$DUMPS"' EXIT
 # No re-exec for huge pages (valgrind would not follow it); llvmpipe's thread count fixed.
 export SHADOWLAB_HUGE_PAGES=0 SHADOWLAB_COST=instructions SHADOWLAB_CALLGRIND_OUT="$DUMPS/cg"
-export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
-valgrind --tool=callgrind --callgrind-out-file="$DUMPS/cg" --zero-before=shadowlab_cost_zero \
-  --dump-after=shadowlab_cost_dump --dump-instr=no --compress-strings=no \
-  --log-file="$DUMPS/valgrind.log" "$BIN" "$@"
+export SHADOWLAB_CODEC=child LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
+valgrind --tool=callgrind --trace-children=no --callgrind-out-file="$DUMPS/cg" \
+  --zero-before=shadowlab_cost_zero --dump-after=shadowlab_cost_dump --dump-instr=no \
+  --compress-strings=no --log-file="$DUMPS/valgrind.log" "$BIN" "$@" ||
+  { rc=$?; tail -40 "$DUMPS/valgrind.log" >&2; exit "$rc"; }

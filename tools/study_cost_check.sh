@@ -3,13 +3,16 @@
 # twice, into OUT/quiet/ and OUT/loaded/, the second with a busy loop on every core but one
 # (started and stopped here), then compares every row's cost (frame_cost_min) and the ratio
 # to the copy pass (frame_over_copy), and prints the largest relative differences.
-#   tools/study_cost_check.sh SHADOWLAB OUT [shadowlab study options...]
+#   tools/study_cost_check.sh [--exact] SHADOWLAB OUT [shadowlab study options...]
+# --exact: both runs count instructions under callgrind (tools/cost_exact.sh) instead of CPU time.
 # Exit status 1 if a row's cost differs by more than ${SHADOWLAB_COST_TOLERANCE:-10} %.
 set -euo pipefail
+RUN=()
+if [ "${1:-}" = --exact ]; then RUN=("$(dirname "$0")/cost_exact.sh"); shift; fi
 BIN="$1"; OUT="$2"; shift 2
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 rm -rf "$OUT/quiet" "$OUT/loaded"
-"$BIN" study --out "$OUT/quiet" --no-progress "$@" > "$OUT.quiet.log"
+"${RUN[@]}" "$BIN" study --out "$OUT/quiet" --no-progress "$@" > "$OUT.quiet.log"
 LOADERS=()
 for _ in $(seq "$(( $(nproc) > 1 ? $(nproc) - 1 : 1 ))"); do
   ( while :; do :; done ) &
@@ -17,7 +20,7 @@ for _ in $(seq "$(( $(nproc) > 1 ? $(nproc) - 1 : 1 ))"); do
 done
 stop() { for p in "${LOADERS[@]}"; do kill "$p" 2>/dev/null || true; done; }
 trap stop EXIT
-"$BIN" study --out "$OUT/loaded" --no-progress "$@" > "$OUT.loaded.log"
+"${RUN[@]}" "$BIN" study --out "$OUT/loaded" --no-progress "$@" > "$OUT.loaded.log"
 stop
 trap - EXIT
 # Rows by key (scene..light_size); columns found by name in the header.

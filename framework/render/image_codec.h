@@ -47,8 +47,11 @@ struct ImageCodec {
 };
 
 // The module's table, loaded on first call (thread-safe). Throws std::runtime_error if the
-// module is missing or does not load.
+// module is missing or does not load. With SHADOWLAB_CODEC=child: a child process's
+// (codec_child.h).
 const ImageCodec& imageCodec();
+// The module itself, whatever SHADOWLAB_CODEC says (the codec child's own work).
+const ImageCodec& moduleCodec();
 
 }  // namespace sl
 

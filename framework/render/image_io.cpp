@@ -1,6 +1,7 @@
 // image_io: OpenImageIO output and input, previews, hashes (see image_io.h).
 #include "image_io.h"
 
+#include "codec_child.h"
 #include "image_codec.h"
 
 #include <dlfcn.h>
@@ -39,8 +40,14 @@ const ImageCodec* loadCodec() {
 
 }  // namespace
 
-const ImageCodec& imageCodec() {
+const ImageCodec& moduleCodec() {
     static const ImageCodec* codec = loadCodec();
+    return *codec;
+}
+
+const ImageCodec& imageCodec() {
+    // SHADOWLAB_CODEC=child: OpenImageIO stays out of this process (codec_child.h).
+    static const ImageCodec* codec = codecInChild() ? &childCodec() : loadCodec();
     return *codec;
 }
 
