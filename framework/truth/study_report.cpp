@@ -2,6 +2,9 @@
 #include "study_report.h"
 
 #include "paths.h"
+#include "study_crops.h"
+#include "study_figures.h"
+#include "study_pick.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -37,10 +40,27 @@ double plotY(double v) { return std::max(v, 1e-5); }
 
 void writeDat(const fs::path& p, const std::vector<const StudyRow*>& rows) {
     std::ofstream out(p);
-    out << "# frame_over_copy truth_rmse map_bytes label\n";
+    out << "# frame_over_copy truth_rmse map_bytes marker_size colour label\n";
     for (const StudyRow* r : rows)
         out << num(r->frameRatio, "%.6g") << " " << num(plotY(r->truth.rmse), "%.6g") << " "
-            << r->mapBytes << " \"" << label(*r) << "\"\n";
+            << r->mapBytes << " " << num(markerSize(r->mapSize), "%.3f") << " "
+            << std::stol(kernelColour(r->filter, r->radius).substr(1), nullptr, 16) << " \""
+            << label(*r) << "\"\n";
+}
+
+std::string slugOf(const std::string& s) {
+    std::string o;
+    for (char c : s) o += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.' ? c : '_';
+    return o;
+}
+
+void runGnuplot(const std::string& vars, const std::string& script, const fs::path& logFile) {
+    const std::string cmd = "gnuplot -e \"" + vars + "\" '" + (repoRoot() / "tools" / script).string() +
+                            "' > '" + logFile.string() + "' 2>&1";
+    // gnuplot's warnings (a one-point series has an "empty range") go to the log.
+    if (std::system(cmd.c_str()) != 0)
+        throw std::runtime_error("gnuplot failed (" + cmd + "; see " + logFile.string() +
+                                 "); is gnuplot-nox installed?");
 }
 
 std::vector<const StudyRow*> front(const std::vector<const StudyRow*>& rows, bool bytes) {
@@ -91,6 +111,8 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         double lightSize;
         std::string name;  // "pareto" for the first light size, "pareto_light_0.8" for others
         std::vector<const StudyRow*> timeFront;
+        std::vector<Pick> picks;
+        std::string costName;  // kernel_cost / pass_cost files' suffix
     };
     std::vector<PlotSet> sets;
     std::vector<std::string> specs;
@@ -100,7 +122,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         bySpec[r.spec].push_back(&r);
     }
     for (double lightSize : lightSizes) {
-        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + num(lightSize, "%g"), {}};
+        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + num(lightSize, "%g"), {}, {}, {}};
         const fs::path plots = dir / (sets.empty() ? "plots" : "plots_light_" + num(lightSize, "%g"));
         fs::create_directories(plots);
         std::vector<const StudyRow*> all;
@@ -121,19 +143,45 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         set.timeFront = front(all, false);
         writeDat(plots / "front.dat", set.timeFront);
         writeDat(plots / "front_bytes.dat", front(all, true));
-        const fs::path script = repoRoot() / "tools" / "study_plots.gp";
         const std::string setTitle = title + (lightSizes.size() > 1 || lightSize > 0
                                                   ? ", light size " + num(lightSize, "%g")
                                                   : "");
-        const std::string cmd = "gnuplot -e \"dir='" + plots.string() + "'; out='" +
-                                (dir / set.name).string() + "'; names='" + names + "'; title='" +
-                                setTitle + "'\" '" + script.string() + "' > '" +
-                                (plots / "gnuplot.log").string() + "' 2>&1";
-        // gnuplot's warnings (a one-point series has an "empty range") go to gnuplot.log.
-        if (std::system(cmd.c_str()) != 0)
-            throw std::runtime_error("gnuplot failed (" + cmd + "; see gnuplot.log); is "
-                                     "gnuplot-nox installed?");
+        // The legend's map sizes and kernels, and a y range fitted to the data.
+        std::vector<int> sizes;
+        std::vector<std::pair<std::string, int>> kernels;
+        double ymin = 1e300, ymax = 0;
+        for (const StudyRow* r : all) {
+            if (std::find(sizes.begin(), sizes.end(), r->mapSize) == sizes.end()) sizes.push_back(r->mapSize);
+            const std::pair<std::string, int> k{r->filter == "none" ? "none" : r->filter,
+                                                r->filter == "none" ? 0 : r->radius};
+            if (std::find(kernels.begin(), kernels.end(), k) == kernels.end()) kernels.push_back(k);
+            ymin = std::min(ymin, plotY(r->truth.rmse));
+            ymax = std::max(ymax, plotY(r->truth.rmse));
+        }
+        std::sort(sizes.begin(), sizes.end());
+        std::sort(kernels.begin(), kernels.end());
+        std::string sizeWords, kernelWords, colourWords;
+        for (int z : sizes) sizeWords += (sizeWords.empty() ? "" : " ") + std::to_string(z);
+        for (const auto& [f, r] : kernels) {
+            std::string k = kernelName(f, r);
+            std::replace(k.begin(), k.end(), ' ', ':');
+            kernelWords += (kernelWords.empty() ? "" : " ") + k;
+            colourWords += (colourWords.empty() ? "" : " ") + kernelColour(f, r);
+        }
+        runGnuplot("dir='" + plots.string() + "'; out='" + (dir / set.name).string() + "'; names='" +
+                       names + "'; title='" + setTitle + "'; sizes='" + sizeWords + "'; kernels='" +
+                       kernelWords + "'; kcolours='" + colourWords + "'; ymin=" +
+                       num(ymin / 1.12, "%.6g") + "; ymax=" + num(ymax * 1.12, "%.6g"),
+                   "study_plots.gp", plots / "gnuplot.log");
         log << "wrote " << (dir / set.name).string() << ".{svg,png}, " << set.name << "_bytes.{svg,png}\n";
+        // Cost against kernel radius and per pass (study_figures.h).
+        set.costName = sets.empty() ? "" : "_light_" + num(lightSize, "%g");
+        const std::string kvars = writeKernelAndPassData(plots, all);
+        runGnuplot(kvars + "; dir='" + plots.string() + "'; out='" +
+                       (dir / ("kernel_cost" + set.costName)).string() + "'; bars='" +
+                       (dir / ("pass_cost" + set.costName)).string() + "'; title='" + setTitle + "'",
+                   "study_cost_plots.gp", plots / "gnuplot_cost.log");
+        set.picks = pickConfigurations(all);
         sets.push_back(std::move(set));
     }
 
@@ -165,7 +213,43 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
                  << num(r->frameRatio, "%.2f") << "</td><td>" << num(r->truth.rmse) << "</td><td>"
                  << num(r->truth.p99) << "</td><td>" << num(r->filtered.rmse) << "</td><td>"
                  << num(r->truth.leakArea) << "</td></tr>\n";
-        page << "</table>\n";
+        page << "</table>\n<h3>Which configuration to pick (from the table above)</h3>\n<table><tr>"
+                "<th>question</th><th>configuration</th><th>RMSE truth</th><th>frame/copy</th>"
+                "<th>map bytes</th></tr>\n";
+        for (const Pick& p : set.picks)
+            page << "<tr><td class=l>" << html(p.question) << "</td><td class=l>"
+                 << html(pickConfiguration(*p.row)) << "</td><td>" << num(p.row->truth.rmse)
+                 << "</td><td>" << num(p.row->frameRatio, "%.2f") << "</td><td>" << p.row->mapBytes
+                 << "</td></tr>\n";
+        page << "</table>\n<h3>Where the cost goes</h3>\n<img src=\"kernel_cost" << set.costName
+             << ".svg\" alt=\"cost against kernel radius\" width=\"900\">\n<img src=\"pass_cost"
+             << set.costName << ".svg\" alt=\"cost per pass\" width=\"900\">\n";
+    }
+    {
+        std::ofstream pick(dir / "pick.md");
+        for (const PlotSet& set : sets) pick << pickMarkdown(set.picks);
+    }
+    page << "<h2>Failures, enlarged: G | truth | error, per technique's most accurate "
+            "configuration</h2>\n<p>The window where it leaks most (G below the truth by more "
+            "than 0.1: light where the truth has shadow) and where it over-darkens most (acne, "
+            "a filter's bias, a moment bound).</p>\n";
+    for (double lightSize : lightSizes)
+    for (const std::string& spec : specs) {
+        std::vector<const StudyRow*> rs;
+        for (const StudyRow* r : bySpec[spec])
+            if (r->lightSize == lightSize) rs.push_back(r);
+        if (rs.empty()) continue;
+        const StudyRow* best = *std::min_element(rs.begin(), rs.end(), [](auto a, auto b) {
+            return a->truth.rmse < b->truth.rmse;
+        });
+        const auto crops = writeFailureCrops(dir, *best, truthImage(dir, lightSize),
+                                             slugOf(spec) + "_light" + num(lightSize, "%g"));
+        for (const FailureCrop& c : crops)
+            page << "<figure><img style=\"width:auto\" src=\"" << c.file << "\" alt=\"" << c.kind
+                 << "\"><figcaption>" << html(spec) << ", " << html(label(*best)) << ", light "
+                 << num(lightSize, "%g") << ": " << (c.kind == "leak" ? "light leaking" : "too dark")
+                 << ", mean |ΔG| " << num(c.meanError, "%.2f") << " at (" << c.x << ", " << c.y
+                 << ")</figcaption></figure>\n";
     }
     page << "<h2>Per technique: its most accurate configuration</h2>\n";
     for (double lightSize : lightSizes)
