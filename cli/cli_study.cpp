@@ -129,7 +129,8 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
                     filters = "gaussian,sat", solution = defaultSolution(), out, cache,
                     lightSizes, shard = "1/1";
         std::vector<std::string> merge;
-        int repeats = 3, samples = 1296, image = 0;
+        int repeats = 3, samples = 1296, image = 0, flicker = 0;
+        double flickerStep = 0.2;
         bool explain = false, noProgress = false, noShare = false;
     };
     auto s = std::make_shared<StudyArgs>();
@@ -142,6 +143,11 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
     study->add_option("--light-sizes", s->lightSizes,
                       "light sizes to sweep (0: point light; > 0: a disk that wide); default: the scene's");
     study->add_option("--repeats", s->repeats, "timed frames per row")->check(CLI::Range(1, 100));
+    study->add_option("--flicker", s->flicker,
+                      "temporal stability: frames of a turning light per row (0: not measured)")
+        ->check(CLI::Range(0, 64));
+    study->add_option("--flicker-step", s->flickerStep, "degrees the light turns per frame")
+        ->check(CLI::Range(0.001, 30.0));
     study->add_option("--shard", s->shard, "run only shard K of N (K/N), whole groups of rows sharing a map");
     study->add_option("--merge", s->merge, "study folders of shards to merge into --out first")
         ->expected(1, -1);
@@ -163,6 +169,8 @@ void addStudyCommands(CLI::App& app, Context& ctx) {
         o.radii = intList(s->radii, "--radii");
         o.filters = splitList(s->filters);
         o.repeats = s->repeats;
+        o.flickerFrames = s->flicker;
+        o.flickerStep = s->flickerStep;
         for (const auto& item : splitList(s->lightSizes)) {
             try {
                 size_t used = 0;

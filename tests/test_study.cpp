@@ -38,6 +38,7 @@ protected:
         o.filters = {"gaussian"};
         o.repeats = 1;
         o.imageSize = 128;
+        o.flickerFrames = 3;  // temporal stability (study_flicker.h)
         o.out = *dir_;
         o.progress = false;
         return o;
@@ -90,6 +91,15 @@ TEST_F(Study, OneRowPerCombinationNoNaNWorseSmallMapAndReuse) {
         ASSERT_TRUE(small && large) << tech;
         EXPECT_GT(small->truth.rmse, 1.3 * large->truth.rmse) << tech;
         EXPECT_GT(small->truth.p99, large->truth.p99) << tech;
+        // ... and flickers more as the light turns: its edges jump by larger texels.
+        EXPECT_GT(small->flicker, large->flicker) << tech;
+    }
+    // The light really moved: the truth changes (a cache keyed without the light's position
+    // would give every frame the first frame's truth), the same for every row.
+    for (const StudyRow& r : rows) {
+        EXPECT_EQ(r.flickerFrames, 3) << r.key();
+        EXPECT_GT(r.flickerTruth, 1e-5) << r.key();
+        EXPECT_EQ(r.flickerTruth, rows[0].flickerTruth) << r.key();
     }
     // What was reused, said per row. Rows in order msm4 128, msm4 2048, vsm 128, vsm 2048: vsm
     // shares msm4's depth maps and filtered truths (same size, same kernel).
@@ -128,6 +138,18 @@ TEST_F(Study, PlotsAndPageOpenInHeadlessChromium) {
     std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("Pareto front"), std::string::npos);
     EXPECT_NE(text.find("msm4"), std::string::npos);
+    EXPECT_NE(text.find("map 2048²"), std::string::npos) << "the legend names no map size";
+    for (const char* f : {"kernel_cost.svg", "pass_cost.svg", "pass_cost.png", "pick.md"})
+        EXPECT_TRUE(fs::exists(*dir_ / f)) << f;
+    // Every crop the page shows exists (vsm leaks at 128² on classic: one at least).
+    std::ifstream pageFile(*dir_ / "index.html");
+    const std::string page((std::istreambuf_iterator<char>(pageFile)), std::istreambuf_iterator<char>());
+    int crops = 0;
+    for (size_t at = page.find("src=\"crops/"); at != std::string::npos;
+         at = page.find("src=\"crops/", at + 1), ++crops)
+        EXPECT_TRUE(fs::exists(*dir_ / page.substr(at + 5, page.find('"', at + 5) - at - 5)));
+    EXPECT_GE(crops, 1);
+    EXPECT_NE(page.find("Which configuration to pick"), std::string::npos);
     if (test::runCommand("command -v chromium").exitCode != 0)
         GTEST_SKIP() << "chromium is not installed (apt-get install chromium): page not opened";
     const fs::path shot = test::tempDir("study_shot") / "shot.png";

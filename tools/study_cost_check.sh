@@ -40,7 +40,7 @@ awk -F, -v tol="${SHADOWLAB_COST_TOLERANCE:-10}" '
     sum += d
   }
   END {
-    printf "%d rows compared: cost (frame_cost_min) differs by at most %.1f %% (%s), mean %.1f %%; " \
+    printf "%d rows compared: cost (frame_cost_min) differs by at most %.3g %% (%s), mean %.3g %%; " \
            "frame/copy ratio at most %.1f %%; wall time (frame_wall_ms_median) at most %.0f %%\n",
            n, 100 * worst, worstKey, 100 * sum / n, 100 * worstRatio, 100 * worstWall
     exit (100 * worst > tol)

@@ -31,7 +31,10 @@ do for [term in "svg pngcairo"] {
         plot for [i=1:m] sprintf("%s/kernel_%d.dat", dir, i) using 1:2 with linespoints \
                  pt pt(i) lc rgb lc(i) lw 1.5 title word(kseries, i)
     } else {
-        plot NaN title "one radius only: no kernel axis"
+        set xrange [1:10]; set yrange [0.1:10]
+        set label 1 "one radius per technique: no kernel axis (sweep --radii 1,2,4,...)" at graph 0.5, 0.5 center
+        plot NaN notitle
+        unset label 1; set autoscale
     }
     unset output
 }

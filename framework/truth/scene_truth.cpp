@@ -1,6 +1,8 @@
 // scene_truth: cached ray-traced truth of a scene (see scene_truth.h).
 #include "scene_truth.h"
 
+#include <cstdio>
+
 #include "image_io.h"
 #include "light_reach.h"
 #include "ray_scene.h"
@@ -36,6 +38,13 @@ std::string sceneTruthHash(const Scene& scene, const SceneTruthOptions& options)
     for (const Light& l : scene.lights)
         key += "\nlight size=" + std::to_string(l.size) + "," + std::to_string(l.rectangle.x) +
                "," + std::to_string(l.rectangle.y);
+    // ... and another place (the study's turning light, study_flicker.h): exact floats.
+    char at[200];
+    for (const Light& l : scene.lights) {
+        std::snprintf(at, sizeof at, "\nlight at=%a,%a,%a to %a,%a,%a", l.position.x, l.position.y,
+                      l.position.z, l.target.x, l.target.y, l.target.z);
+        key += at;
+    }
     const Camera& cam = scene.cameras.at(size_t(options.camera));
     key += "\ncamera=" + std::to_string(options.camera) + ":" + std::to_string(cam.width) + "x" +
            std::to_string(cam.height);  // a study may render the scene smaller than its file

@@ -12,7 +12,9 @@
 #include "raw_map_key.h"
 #include "renderer.h"
 #include "scene_truth.h"
+#include "study_combinations.h"
 #include "study_cost.h"
+#include "study_flicker.h"
 #include "study_report.h"
 #include "study_shard.h"
 #include "technique.h"
@@ -32,75 +34,6 @@ namespace sl {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-struct Combination {
-    std::string spec;
-    Technique technique;
-    std::vector<std::pair<std::string, double>> params;
-    double momentBias;  // < 0: the scene's
-    FilterKind filter;
-    int radius;
-    int size;
-    double lightSize;  // < 0: the scene's own lights
-};
-
-FilterKind filterFromName(const std::string& name) {
-    if (name == "none") return FilterKind::None;
-    if (name == "gaussian") return FilterKind::Gaussian;
-    if (name == "sat") return FilterKind::Sat;
-    throw std::invalid_argument("filter \"" + name + "\": expected none, gaussian or sat");
-}
-
-std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::string>& notes) {
-    std::vector<Combination> out;
-    std::vector<double> lightSizes = o.lightSizes;
-    if (lightSizes.empty()) lightSizes.push_back(-1.0);
-    for (double lightSize : lightSizes)
-    for (const std::string& spec : o.techniques) {
-        auto [t, allParams] = parseTechniqueSpec(spec);
-        const TechniqueRow& row = techniqueRow(t);
-        // "momentBias" (α) is the scene's shadow.momentBias, not a row parameter: the study lets
-        // a spec set it (msm4:momentBias=1e-4) so that α can be swept like the rest.
-        std::vector<std::pair<std::string, double>> params;
-        double momentBias = -1.0;
-        for (const auto& [name, value] : allParams)
-            if (name == "momentBias") momentBias = value;
-            else params.emplace_back(name, value);
-        std::vector<FilterKind> filters;
-        for (const auto& f : o.filters) {
-            const FilterKind k = filterFromName(f);
-            if (std::count(row.filters.begin(), row.filters.end(), k)) filters.push_back(k);
-        }
-        if (filters.empty()) {
-            filters.push_back(row.filters.front());
-            if (lightSize == lightSizes.front())
-            notes.push_back(spec + ": none of the requested filters applies; its own (" +
-                            std::string(toString(row.filters.front())) + ") is used");
-        }
-        for (int size : o.mapSizes)
-            for (FilterKind f : filters) {
-                if (f == FilterKind::None) {
-                    out.push_back({spec, t, params, momentBias, f, 0, size, lightSize});
-                    continue;
-                }
-                ShadowEffect fx;
-                fx.technique = t;
-                fx.filter = f;
-                if (!kernelReachesImage(fx) && !o.radii.empty()) {  // every radius, one frame
-                    out.push_back({spec, t, params, momentBias, f, o.radii.front(), size, lightSize});
-                    if (size == o.mapSizes.front() && lightSize == lightSizes.front() &&
-                        o.radii.size() > 1)
-                        notes.push_back(spec + ": its " + toString(f) + " kernel does not reach the "
-                                        "image (it picks its box per pixel): one row, radius " +
-                                        std::to_string(o.radii.front()));
-                    continue;
-                }
-                for (int r : o.radii)
-                    out.push_back({spec, t, params, momentBias, f, r, size, lightSize});
-            }
-    }
-    return out;
-}
 
 std::string slug(const std::string& s) {
     std::string out;
@@ -231,6 +164,20 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         return t;
     };
     SceneTruthOptions hashOnly = to;
+    // The turning light's truths, once per light size (study_flicker.h).
+    std::map<double, FlickerSequence> flickers;
+    auto flickerFor = [&](double lightSize) -> const FlickerSequence& {
+        auto it = flickers.find(lightSize);
+        if (it != flickers.end()) return it->second;
+        const auto t0 = Clock::now();
+        FlickerSequence q = flickerSequence(withLightSize(base, lightSize), o.flickerFrames,
+                                            o.flickerStep, referenceLib, to);
+        summary.notes.push_back("flicker: " + std::to_string(o.flickerFrames) + " frames, light "
+                                "turning " + studyFmt("%g", o.flickerStep) + "° a frame; truth's "
+                                "mean change " + studyFmt("%.5f", q.truthChange) + " (" +
+                                studyFmt("%.1f s", std::chrono::duration<double>(Clock::now() - t0).count()) + ")");
+        return flickers.emplace(lightSize, std::move(q)).first->second;
+    };
     auto sceneHash = [&](double lightSize) { return sceneTruthHash(withLightSize(base, lightSize), hashOnly); };
 
     // One depth map per size (the shadow pass of msm4 through the reference stages, b1 = z),
@@ -429,6 +376,12 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         const Image& filtered = filteredTruths.at(kernelKey);
         row.truth = measureShadowError(shadow, truth.ray.shadow, reached);
         row.filtered = measureShadowError(shadow, filtered, reached);
+        if (o.flickerFrames > 1) {
+            const FlickerSequence& q = flickerFor(c.lightSize);
+            row.flickerFrames = q.frames;
+            row.flickerTruth = q.truthChange;
+            row.flicker = rowChange(solution, s, q, rowPlan) - q.truthChange;
+        }
         row.reused = std::string("truth (") + (truth.fromCache ? "disk cache" : "this sweep") +
                      "); depth map " + std::to_string(c.size) + "² " +
                      (haveDepth ? "shared" : "rendered") + "; filtered truth " +

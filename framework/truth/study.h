@@ -33,6 +33,10 @@ struct StudyOptions {
     // Empty: the scene's own lights only.
     std::vector<double> lightSizes;
     int repeats = 3;
+    // Temporal stability (study_flicker.h): frames of a light turning by flickerStep degrees
+    // per frame; 0 (or 1): not measured.
+    int flickerFrames = 0;
+    double flickerStep = 0.2;
     std::string solution = "reference";
     int imageSize = 0;     // > 0: the main camera renders imageSize² (keeping nothing else)
     int samples = 1296;    // shadow rays per pixel for area lights (36², max SE < 0.005 here)

@@ -117,4 +117,31 @@ std::string writeKernelAndPassData(const fs::path& plots, const std::vector<cons
     return "kseries='" + names + "'; kmap=" + std::to_string(size);
 }
 
+std::string writeFlickerData(const fs::path& plots, const std::vector<const StudyRow*>& rows) {
+    std::vector<std::string> specs;
+    // Per spec and map size: the row with the cheapest kernel (Gaussian first, smallest r).
+    std::map<std::string, std::map<int, const StudyRow*>> pick;
+    auto rank = [](const StudyRow* x) {
+        return (x->filter == "gaussian" ? 0 : x->filter == "none" ? 1 : 2) * 1000 + x->radius;
+    };
+    for (const StudyRow* r : rows) {
+        if (r->flickerFrames < 2) continue;
+        if (!pick.count(r->spec)) specs.push_back(r->spec);
+        const StudyRow*& p = pick[r->spec][r->mapSize];
+        if (!p || rank(r) < rank(p)) p = r;
+    }
+    if (specs.empty()) return "";
+    std::string names;
+    int n = 0;
+    for (const std::string& spec : specs) {
+        std::ofstream out(plots / ("flicker_" + std::to_string(++n) + ".dat"));
+        out << "# map_size flicker truth_change kernel\n";
+        for (const auto& [size, r] : pick[spec])
+            out << size << " " << figureFmt(r->flicker) << " " << figureFmt(r->flickerTruth) << " \""
+                << kernelName(r->filter, r->radius) << "\"\n";
+        names += (names.empty() ? "" : " ") + spec;
+    }
+    return "fseries='" + names + "'";
+}
+
 }  // namespace sl

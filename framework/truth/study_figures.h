@@ -41,4 +41,9 @@ int figureMapSize(const std::vector<const StudyRow*>& rows);
 // that name them: "kseries='...'; kmap=1024".
 std::string writeKernelAndPassData(const fs::path& plots, const std::vector<const StudyRow*>& rows);
 
+// Writes flicker_<i>.dat (map size, flicker, the truth's own change: one technique each, at
+// its smallest kernel, Gaussian where it has one) when the rows measured flicker. Returns
+// "fseries='...'", or "" when no row did.
+std::string writeFlickerData(const fs::path& plots, const std::vector<const StudyRow*>& rows);
+
 }  // namespace sl

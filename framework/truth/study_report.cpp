@@ -113,6 +113,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         std::vector<const StudyRow*> timeFront;
         std::vector<Pick> picks;
         std::string costName;  // kernel_cost / pass_cost files' suffix
+        bool flicker = false;  // rows measured flicker: flicker<costName>.svg
     };
     std::vector<PlotSet> sets;
     std::vector<std::string> specs;
@@ -122,7 +123,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         bySpec[r.spec].push_back(&r);
     }
     for (double lightSize : lightSizes) {
-        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + num(lightSize, "%g"), {}, {}, {}};
+        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + num(lightSize, "%g"), {}, {}, {}, false};
         const fs::path plots = dir / (sets.empty() ? "plots" : "plots_light_" + num(lightSize, "%g"));
         fs::create_directories(plots);
         std::vector<const StudyRow*> all;
@@ -182,6 +183,12 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
                        (dir / ("pass_cost" + set.costName)).string() + "'; title='" + setTitle + "'",
                    "study_cost_plots.gp", plots / "gnuplot_cost.log");
         set.picks = pickConfigurations(all);
+        const std::string fvars = writeFlickerData(plots, all);
+        set.flicker = !fvars.empty();
+        if (set.flicker)
+            runGnuplot(fvars + "; dir='" + plots.string() + "'; out='" +
+                           (dir / ("flicker" + set.costName)).string() + "'; title='" + setTitle + "'",
+                       "study_flicker.gp", plots / "gnuplot_flicker.log");
         sets.push_back(std::move(set));
     }
 
@@ -224,6 +231,12 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         page << "</table>\n<h3>Where the cost goes</h3>\n<img src=\"kernel_cost" << set.costName
              << ".svg\" alt=\"cost against kernel radius\" width=\"900\">\n<img src=\"pass_cost"
              << set.costName << ".svg\" alt=\"cost per pass\" width=\"900\">\n";
+        if (set.flicker)
+            page << "<h3>Temporal stability</h3>\n<p>The light turns a little each frame "
+                    "(<code>--flicker</code>); flicker is the mean frame-to-frame change of G "
+                    "minus the ray-traced truth's own change, over the pixels the light reaches "
+                    "(0: as steady as the truth; below 0: the blur hides real motion).</p>\n"
+                    "<img src=\"flicker" << set.costName << ".svg\" alt=\"flicker\" width=\"900\">\n";
     }
     {
         std::ofstream pick(dir / "pick.md");

@@ -17,7 +17,8 @@ const std::vector<std::string>& columns() {
         "pass_cost", "copy_cost", "frame_over_copy", "cost_method",
         "truth_rmse", "truth_max", "truth_p99", "truth_over_0.05", "truth_leak_area",
         "truth_dark_area", "filtered_rmse", "filtered_max", "filtered_p99",
-        "filtered_over_0.05", "filtered_leak_area", "filtered_dark_area", "pixels", "reused",
+        "filtered_over_0.05", "filtered_leak_area", "filtered_dark_area", "pixels",
+        "flicker_frames", "flicker", "flicker_truth", "reused",
         "map_key", "map_from", "image_sha256", "image", "error_map"};
     return c;
 }
@@ -92,6 +93,9 @@ std::string toCsvLine(const StudyRow& r) {
     errorFields(f, r.truth);
     errorFields(f, r.filtered);
     f.push_back(std::to_string(r.truth.pixels));
+    f.push_back(std::to_string(r.flickerFrames));
+    f.push_back(csvNumber(r.flicker));
+    f.push_back(csvNumber(r.flickerTruth));
     f.push_back(quoted(r.reused));
     f.push_back(quoted(r.mapKey));
     f.push_back(quoted(r.mapFrom));
@@ -148,6 +152,8 @@ std::vector<StudyRow> readStudyCsv(const fs::path& path) {
                 e->leakArea = std::stod(f[i++]), e->darkArea = std::stod(f[i++]);
             }
             r.truth.pixels = r.filtered.pixels = std::stoull(f[i++]);
+            r.flickerFrames = std::stoi(f[i++]);
+            r.flicker = std::stod(f[i++]), r.flickerTruth = std::stod(f[i++]);
             r.reused = f[i++], r.mapKey = f[i++], r.mapFrom = f[i++];
             r.imageDigest = f[i++], r.image = f[i++], r.errorMap = f[i++];
             rows.push_back(r);

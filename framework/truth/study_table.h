@@ -39,6 +39,10 @@ struct StudyRow {
     std::string costMethod;    // what the cost columns measure (study_cost.h)
     ShadowError truth;         // against the ray-traced truth
     ShadowError filtered;      // against the exact filtered visibility of the same map
+    // Temporal stability (study_flicker.h): over flickerFrames frames of a turning light, the
+    // mean frame-to-frame change of G minus the truth's (flickerTruth); 0 frames: not measured.
+    int flickerFrames = 0;
+    double flicker = 0, flickerTruth = 0;
     std::string reused;        // what this row took from earlier work, in words
     std::string mapKey;        // its raw shadow map: what, format, size, light, key digest
     std::string mapFrom;       // the row (key()) whose raw map it lit with; "": rendered its own
