@@ -47,11 +47,16 @@ for scene in "${SCENES[@]}"; do
   "$BIN" study --scene "$scene" --out "$OUT/$name" "${SWEEP[@]}" "$@"
   dest="$DOCS/$name"
   rm -rf "$dest"; mkdir -p "$dest"
-  cp "$OUT/$name"/{study.csv,index.html} "$OUT/$name"/pareto*.svg "$OUT/$name"/pareto*.png "$dest/"
+  cp "$OUT/$name"/{study.csv,index.html,pick.md} "$OUT/$name"/{pareto,kernel_cost,pass_cost,flicker}*.{svg,png} \
+    "$dest/" 2>/dev/null || true
   # The images the page shows (one row per technique, the truth), nothing else.
   grep -o 'src="[^"]*\.png"' "$OUT/$name/index.html" | sed 's/^src="//; s/"$//' | sort -u |
     while read -r img; do mkdir -p "$dest/$(dirname "$img")"; cp "$OUT/$name/$img" "$dest/$img"; done
 done
+# Which configuration to pick, every scene in one table (each scene's pick.md, from its data).
+{ echo "| scene | light | question | configuration | RMSE (truth) | frame/copy | map bytes |"
+  echo "|---|---|---|---|---|---|---|"
+  for scene in "${SCENES[@]}"; do cat "$DOCS/$(basename "$scene" .json)/pick.md"; done; } > "$DOCS/pick.md"
 # What α (msm4's moment bias) costs: msm4 at α = 0 .. 3e-3 on two scenes, 512² map, both filters.
 ALPHA=()
 for a in 0 3e-6 3e-5 3e-4 3e-3; do ALPHA+=("msm4:momentBias=$a"); done
