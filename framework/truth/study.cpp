@@ -241,6 +241,17 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         if (mine[i] && !done.count(rows[i].row.key())) shared.expect(rows[i].map.digest);
     }
 
+    // Where the sweep's time goes (wall seconds per phase, said in the summary).
+    std::vector<std::pair<std::string, double>> phases;
+    auto lapStart = Clock::now();
+    auto lap = [&](const std::string& name) {
+        const auto now = Clock::now();
+        const double sec = std::chrono::duration<double>(now - lapStart).count();
+        lapStart = now;
+        for (auto& [n, v] : phases)
+            if (n == name) { v += sec; return; }
+        phases.emplace_back(name, sec);
+    };
     std::optional<SharedRawMap> pendingKeep;  // the map this row rendered, kept after its frames
     const auto sweepStart = Clock::now();
     int index = 0;
@@ -264,7 +275,9 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             const double eta = summary.run ? elapsed / summary.run * (summary.planned - at) : 0;
             progressBar(std::cerr, at, summary.planned, what, eta);
         }
+        lap("bookkeeping");
         const SceneTruth& truth = truthFor(c.lightSize);
+        lap("ray-traced truth");
         const Image& reached = truth.ray.reached;
         const Scene s = rowScene(base, c);
         const PassPlan plan = rowPlan(s);
@@ -308,6 +321,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
                 pendingKeep = std::move(keep);
             }
         }
+        lap("warm-up frame (compiles, renders the shared map)");
         std::vector<std::vector<double>> passMs(plan.passes.size());
         std::vector<double> frames, wallFrames, copies;
         std::vector<std::vector<double>> shadowMs;  // per frame, each of the light's shadow passes
@@ -336,6 +350,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             frames.push_back(frame);
             wallFrames.push_back(wall);
         }
+        lap("timed frames and copy passes");
         if (pendingKeep) {
             pendingKeep->shadowMillis = shadowMs;
             shared.keep(mapKey.digest, std::move(*pendingKeep));
@@ -374,14 +389,17 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
             filteredTruths[kernelKey] =
                 filteredTruth(s, truth.points, reached, light, depthMap(c.size), kernel);
         const Image& filtered = filteredTruths.at(kernelKey);
+        lap("depth map and filtered truth");
         row.truth = measureShadowError(shadow, truth.ray.shadow, reached);
         row.filtered = measureShadowError(shadow, filtered, reached);
+        lap("error measures");
         if (o.flickerFrames > 1) {
             const FlickerSequence& q = flickerFor(c.lightSize);
             row.flickerFrames = q.frames;
             row.flickerTruth = q.truthChange;
             row.flicker = rowChange(solution, s, q, rowPlan) - q.truthChange;
         }
+        lap("flicker (frames and their truths)");
         row.reused = std::string("truth (") + (truth.fromCache ? "disk cache" : "this sweep") +
                      "); depth map " + std::to_string(c.size) + "² " +
                      (haveDepth ? "shared" : "rendered") + "; filtered truth " +
@@ -400,6 +418,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         if (!haveFiltered)
             writePngPreview(filtered, o.out / "truth" / ("filtered_" + slug(kernelKey) + ".png"), false);
         appendStudyRow(csv, row);
+        lap("images and the CSV row");
         shared.done(mapKey.digest);  // (after the last use of `given`: this may drop it)
         ++summary.run;
         if (o.explain) {
@@ -440,6 +459,10 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         (o.shareMaps ? "" : "; sharing off") + "); a shared row reports the shadow-pass cost "
         "measured when its map was rendered");
     summary.notes.push_back("cost: " + method);
+    std::string where = "where the time went (wall s):";
+    for (const auto& [n, v] : phases)
+        if (v >= 0.05) where += " " + n + " " + studyFmt("%.1f", v) + ";";
+    summary.notes.push_back(where);
     if (o.report && o.shards == 1) writeStudyReport(o.out, readStudyCsv(csv), log, o.headline);
     return summary;
 }
