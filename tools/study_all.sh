@@ -18,7 +18,9 @@ DOCS="$ROOT/docs/accuracy"
 # --radii 1,2,4,8,16. Costs are CPU time with llvmpipe's thread count fixed (study_cost.h).
 export LP_NUM_THREADS="${LP_NUM_THREADS:-2}"
 SWEEP=(--map-sizes 256,512,1024,2048 --radii 1,4 --filters gaussian,sat --light-sizes 0,0.8
-       --repeats 3 --image 192)
+       --repeats 3 --image 192 --flicker 4)
+# SHADOWLAB_STUDY_SWEEP replaces it (words split on spaces), for a documented smaller run.
+if [ -n "${SHADOWLAB_STUDY_SWEEP:-}" ]; then read -r -a SWEEP <<< "$SHADOWLAB_STUDY_SWEEP"; fi
 QUICK=0
 if [ "${1:-}" = --quick ]; then
   shift; QUICK=1
@@ -69,5 +71,6 @@ for name in classic light_bleeding; do
   rm -rf "$DOCS/alpha_$name"; mkdir -p "$DOCS/alpha_$name"
   cp "$OUT/alpha_$name"/{study.csv,pareto.svg,pareto.png} "$DOCS/alpha_$name/"
 done
+echo "sweep:    ${SWEEP[*]} $*" >> "$DOCS/machine.txt"
 echo "took:     $(( $(date +%s) - START )) s (tools/study_all.sh, wall clock)" >> "$DOCS/machine.txt"
 echo "docs/accuracy/: ${#SCENES[@]} scenes and the α sweep; see docs/accuracy.md"

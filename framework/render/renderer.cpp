@@ -194,7 +194,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                 .count());
         result.passCost.push_back(costEnd());
     }
-    readBack(library_, row, fx, plan, maps, result);
+    if (inputs.readMaps) readBack(library_, row, fx, plan, maps, result);
     if (inputs.keepRawMaps)
         for (auto& [id, m] : maps) {  // in (light, cascade) order
             if (m.given) continue;  // a filtered map stood in: there is no raw map

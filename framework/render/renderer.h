@@ -52,6 +52,10 @@ struct RenderInputs {
     // Fill RenderResult::rawMaps with every shadowing light's raw map (one extra read-back
     // per light; off by default because a 2048² RGBA32F map is 64 MiB).
     bool keepRawMaps = false;
+    // Read the shadow maps back into RenderResult::images (moments_raw, moments_filtered, sat)
+    // and look for stub stages there. false: only the cameras' images (a study's frames need
+    // only G; a 2048² RGBA32F map is 64 MiB to read, three times a frame).
+    bool readMaps = true;
 };
 
 struct RenderResult {

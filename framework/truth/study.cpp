@@ -298,6 +298,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         // rendered (frame k takes the rendering row's frame k), so the frame stays whole.
         const SharedRawMap* given = shared.find(mapKey.digest);
         RenderInputs inputs;
+        inputs.readMaps = false;  // G only: the maps are not compared (study.h)
         if (given) inputs.rawMaps[light] = given->map;
         auto isShadowPass = [&](size_t p) {
             const PlannedPass& pass = plan.passes[p];

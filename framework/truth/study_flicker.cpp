@@ -51,7 +51,9 @@ double rowChange(Renderer& renderer, const Scene& rowScene, const FlickerSequenc
     double change = 0;
     for (int k = 0; k < q.frames; ++k) {
         const Scene s = movedLight(rowScene, k, q.stepDegrees);
-        RenderResult r = renderer.render(s, plan(s));
+        RenderInputs inputs;
+        inputs.readMaps = false;  // G only
+        RenderResult r = renderer.render(s, plan(s), inputs);
         Image g = std::move(r.images.at("shadow"));
         if (k > 0)
             change += meanChange(g, previous, q.truths[size_t(k)].ray.reached,
