@@ -119,8 +119,13 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
         pass({PassKind::GaussianY, i, -1, why, TextureRole::Filtered});
         return;
     }
-    char why[64];
-    std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
+    char why[128];
+    if (fx.satPerPixel)
+        std::snprintf(why, sizeof why,
+                      "sat filter, per-pixel kernel (satKernelTexels: search <= %.2f, box 1-%.2f "
+                      "texels)", fx.satKernelTexels, fx.satMaxKernelTexels);
+    else
+        std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
     // The table has two texels per entry (satTableWidth).
     for (TextureRole role : {TextureRole::Scratch, TextureRole::Sat})
         add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, satTableWidth(n), n, map.layers, 16));
