@@ -30,6 +30,9 @@ constexpr double u = 1.0 / (1 << 24);  // float32 unit roundoff
 constexpr double kTexelTolerance = 1e-3;
 constexpr double kMutantMaxAbs = 1e-2;
 constexpr double kMutantMinFraction = 1e-3;
+// How far G of a per-pixel SAT scene may move between correct satKernelTexels (catalogue.json's
+// sat_kernel_* alternatives against the reference, scenes/penumbra.json): PLACEHOLDER.
+constexpr double kKernelShadowSpread = 1.0;
 
 struct Entry {
     std::string name, kind, stage, file;  // file: relative to tests/submissions/

@@ -220,6 +220,19 @@ void checkStageOutput(const Entry& e) {
                 EXPECT_LE(compare(a, b, kTexelTolerance).fraction, 1e-2) << key;
             }
         }
+        if (e.stage == "sat" && s.shadow.satPerPixel) {
+            // satKernelTexels shows only in the lighting (the grader's sat stage compares this
+            // shadow too): G from each pixel's box. A mutant must move G visibly; correct
+            // variants stay within kKernelShadowSpread of the reference.
+            const Difference d =
+                compare(got.images.at("shadow"), ref.images.at("shadow"), kTexelTolerance);
+            measured += sceneName + "/shadow (per-pixel boxes): " + d.str() + "; ";
+            std::printf("[catalogue] %-31s %-11s %-9s %-16s %s\n", e.name.c_str(),
+                        e.kind.c_str(), sceneName.c_str(), "shadow", d.str().c_str());
+            if (e.mutant() && d.maxAbs >= kMutantMaxAbs && d.fraction >= kMutantMinFraction)
+                visibleSomewhere = true;
+            if (!e.mutant()) EXPECT_LE(d.maxAbs, kKernelShadowSpread) << "shadow: " << d.str();
+        }
         if (!e.mutant() && e.stage == "msm") {
             // And near the float64 oracle at the depths where G is hardest (just in front of
             // and behind each texel's mean depth, which no rendered image need hit): an

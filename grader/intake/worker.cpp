@@ -188,6 +188,13 @@ void runWorker(const WorkerArgs& a) {
         }
         gl::Finish();
         result.images["moments_filtered"] = dst.read();
+        if (sat && fx.satPerPixel) {
+            // satKernelTexels shows only in the lighting: the scene lit with each pixel's box
+            // from the submission's pair, moments and msm from the reference.
+            RenderResult lit = renderer.render(scene, planPasses(scene));
+            result.images[kKernelShadowImage] = lit.images.at("shadow");
+            result.stubNotes = lit.stubNotes;
+        }
     } else if (is(a, Stage::Msm)) {
         // Lighting only, from the reference's filtered moments (a file: isolated with the
         // goldens alone), sampled bilinearly whatever the scene's filter.
