@@ -38,9 +38,6 @@ struct StubNote {
 };
 
 inline constexpr const char* kWorkerResultFile = "worker.json";
-// The sat stage on a per-pixel scene: the shadow its satKernelTexels' boxes make, every other
-// stage the reference's; compared with the reference's "shadow" image.
-inline constexpr const char* kKernelShadowImage = "moments_filtered_kernel_shadow";
 
 // What a worker writes last, in OUT/<job>/worker.json.
 struct WorkerResult {

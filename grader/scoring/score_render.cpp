@@ -2,6 +2,7 @@
 #include "score_render.h"
 
 #include "depth_ladder.h"
+#include "sat_kernel_ladder.h"
 #include "image_io.h"
 #include "metrics.h"
 #include "raw_image.h"
@@ -43,8 +44,9 @@ std::string worstTexelText(const std::string& image, const Comparison& c) {
 Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Image& mine,
                         const Image& ref, const std::string& image) {
     const CompareBy by = job.stage.compareBy;
-    if (by == CompareBy::Shadow || image == kKernelShadowImage)
-        return compareImages(mine, ref, rubric.shadowTol);
+    if (by == CompareBy::Shadow) return compareImages(mine, ref, rubric.shadowTol);
+    if (image == kSatKernelImage)  // box widths in texels: relative (sat_kernel_ladder.h)
+        return compareMoments(mine, ref, kSatKernelAbs, kSatKernelRel);
     if (by == CompareBy::Colour) return compareImages(mine, ref, rubric.finalTol);
     std::vector<double> extra;
     if (job.stage.stage == Stage::Sat && rubric.satRounding > 0) {
@@ -158,7 +160,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
     std::vector<std::string> images;
     for (const auto& name : worker->images)
         if (name.rfind(prefix, 0) == 0 &&
-            (prefix != "moments_filtered" || name == prefix || name == kKernelShadowImage))
+            (prefix != "moments_filtered" || name == prefix || name == kSatKernelImage))
             images.push_back(name);
     if (images.empty()) images.push_back(prefix);
     double fraction = 1.0, worstCap = 1.0;
@@ -172,9 +174,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
             // msm is compared with the reference lit from the same moments (msm_<image>);
             // the relativeDepth ladder with its exact moments.
             ref = ladder ? depthLadderExpected()
-                  : readAnyImage(referenceFile(job.stage.stage == Stage::Msm ? "msm_" + name
-                                               : name == kKernelShadowImage ? "shadow"
-                                                                            : name));
+                         : readAnyImage(referenceFile(job.stage.stage == Stage::Msm ? "msm_" + name : name));
         } catch (const std::exception& e) {
             t.output = "no reference image " + name + " to compare with (" + e.what() + ")";
             return t;

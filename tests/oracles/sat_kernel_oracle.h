@@ -19,8 +19,8 @@ struct SatKernelInput {
     glm::dvec2 kernelRange;
 };
 
-// The same guards as the contract states: nothing in front of the receiver (zr at or in
-// front of the box's mean), or a blocker share too small to place, gives the smallest box.
+// The same guards as the reference: nothing in front of the receiver (zr at or in front of
+// the box's mean) gives the smallest box, and the penumbra fades in with the blocker share.
 inline double satKernelTexels(const std::vector<double>& sat, int w, int h,
                               const SatKernelInput& in, double minVariance = 1e-7) {
     const glm::dvec4 b = satBoxAverage(sat, w, h, in.center, glm::dvec2(in.searchTexels));
@@ -28,13 +28,17 @@ inline double satKernelTexels(const std::vector<double>& sat, int w, int h,
     if (in.zr <= mu) return in.kernelRange.x;
     const double d = in.zr - mu;
     const double unoccluded = var / (var + d * d);
-    if (1.0 - unoccluded < 1e-4) return in.kernelRange.x;
-    const double zb = std::clamp((mu - unoccluded * in.zr) / (1.0 - unoccluded), 0.0, in.zr);
+    const double share = 1.0 - unoccluded;
+    if (share < 1e-6) return in.kernelRange.x;
+    const double zb = std::clamp((mu - unoccluded * in.zr) / share, 0.0, in.zr);
     const double dr = in.depthRange.x + in.zr * (in.depthRange.y - in.depthRange.x);
     const double db = in.depthRange.x + zb * (in.depthRange.y - in.depthRange.x);
     const double wTexels =
         in.lightTexels * (dr - db) / (in.perspective ? std::max(db, 1e-4 * in.depthRange.y) : 1.0);
-    return std::clamp(wTexels, in.kernelRange.x, in.kernelRange.y);
+    // The penumbra fades in over the first 5 % of blocker share (no jump where it is unsure).
+    const double fade = std::clamp(share / 0.05, 0.0, 1.0);
+    return in.kernelRange.x + fade * (std::clamp(wTexels, in.kernelRange.x, in.kernelRange.y) -
+                                      in.kernelRange.x);
 }
 
 }  // namespace sl::oracle

@@ -92,6 +92,10 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
 //   2. penumbra by similar triangles (PCSS, Fernando 2005) with world depths d along the
 //      light's axis: w = lightTexels·(d_r − d_b) / d_b (perspective), lightTexels·(d_r − d_b)
 //      (orthographic), clamped to kernelRange.
+// The box must not jump where the estimate is unsure: a blocker share 1 − p near 0 places its
+// blockers anywhere (z_b is a ratio of two vanishing numbers), so the penumbra fades in over
+// the first 5 % of share, from the smallest box. Then the box is continuous in the moments,
+// and two solutions whose tables round differently choose nearly the same box.
 float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, vec2 depthRange,
                       float lightTexels, bool perspective, vec2 kernelRange)
 {
@@ -105,15 +109,15 @@ float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, 
         return kernelRange.x;
     double d = double(zr) - mu;
     double p = variance / (variance + d * d);
-    // Almost all of the box is unoccluded: the few blockers' depth is (μ − p·zr) / (1 − p),
-    // a ratio of two vanishing numbers, i.e. noise; they cannot darken the pixel either.
-    if (1.0 - p < 1e-4)
+    double share = 1.0LF - p;  // the blockers' share of the search box
+    // No blockers to speak of (and no 0 / 0 below); the fade makes this the limit anyway.
+    if (share < 1e-6)
         return kernelRange.x;
-    double zb = clamp((mu - p * double(zr)) / (1.0 - p), 0.0LF, double(zr));
+    double zb = clamp((mu - p * double(zr)) / share, 0.0LF, double(zr));
     double dr = mix(double(depthRange.x), double(depthRange.y), double(zr));
     double db = mix(double(depthRange.x), double(depthRange.y), zb);
     // Perspective: the emitter's width scales by (d_r − d_b) / d_b from blocker to receiver;
     // d_b is kept off 0 (a blocker on the light itself).
     double w = double(lightTexels) * (dr - db) / (perspective ? max(db, 1e-4LF * double(depthRange.y)) : 1.0LF);
-    return float(clamp(w, double(kernelRange.x), double(kernelRange.y)));
+    return float(mix(double(kernelRange.x), clamp(w, double(kernelRange.x), double(kernelRange.y)), clamp(share / 0.05LF, 0.0LF, 1.0LF)));
 }

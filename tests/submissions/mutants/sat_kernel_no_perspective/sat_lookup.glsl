@@ -92,6 +92,10 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
 //   2. penumbra by similar triangles (PCSS, Fernando 2005) with world depths d along the
 //      light's axis: w = lightTexels·(d_r − d_b) / d_b (perspective), lightTexels·(d_r − d_b)
 //      (orthographic), clamped to kernelRange.
+// The box must not jump where the estimate is unsure: a blocker share 1 − p near 0 places its
+// blockers anywhere (z_b is a ratio of two vanishing numbers), so the penumbra fades in over
+// the first 5 % of share, from the smallest box. Then the box is continuous in the moments,
+// and two solutions whose tables round differently choose nearly the same box.
 float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, vec2 depthRange,
                       float lightTexels, bool perspective, vec2 kernelRange)
 {
@@ -105,15 +109,15 @@ float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, 
         return kernelRange.x;
     float d = zr - mu;
     float p = variance / (variance + d * d);
-    // Almost all of the box is unoccluded: the few blockers' depth is (μ − p·zr) / (1 − p),
-    // a ratio of two vanishing numbers, i.e. noise; they cannot darken the pixel either.
-    if (1.0 - p < 1e-4)
+    float share = 1.0 - p;  // the blockers' share of the search box
+    // No blockers to speak of (and no 0 / 0 below); the fade makes this the limit anyway.
+    if (share < 1e-6)
         return kernelRange.x;
-    float zb = clamp((mu - p * zr) / (1.0 - p), 0.0, zr);
+    float zb = clamp((mu - p * zr) / share, 0.0, zr);
     float dr = mix(depthRange.x, depthRange.y, zr);
     float db = mix(depthRange.x, depthRange.y, zb);
     // Perspective: the emitter's width scales by (d_r − d_b) / d_b from blocker to receiver;
     // d_b is kept off 0 (a blocker on the light itself).
     float w = lightTexels * (dr - db);
-    return clamp(w, kernelRange.x, kernelRange.y);
+    return mix(kernelRange.x, clamp(w, kernelRange.x, kernelRange.y), clamp(share / 0.05, 0.0, 1.0));
 }
