@@ -1,5 +1,5 @@
+// ALTERNATIVE: per-pixel box: the blockers' depth in closed form, μ − σ²/(zr − μ), algebraically the same as (μ − p·zr)/(1 − p)
 // sat_lookup.glsl: box average of the moment map from its summed-area table.
-// Catalogue alternative (sat_base pair): satKernelTexels with the blockers' depth in closed form, z_b = μ − σ² / (zr − μ).
 //
 // Included by the lighting pass (and by shaders/sat_resolve.comp) when the filter is a SAT.
 // `sat` is the table T written by sat.comp, bound with nearest filtering, read with texelFetch.

@@ -1,5 +1,5 @@
+// ALTERNATIVE: per-pixel box: the blocker search and the penumbra in double
 // sat_lookup.glsl: box average of the moment map from its summed-area table.
-// Catalogue alternative (sat_base pair): satKernelTexels in double throughout.
 //
 // Included by the lighting pass (and by shaders/sat_resolve.comp) when the filter is a SAT.
 // `sat` is the table T written by sat.comp, bound with nearest filtering, read with texelFetch.

@@ -1,5 +1,5 @@
+// MUTANT: per-pixel box: the search box's mean depth taken for the blockers' depth (no Chebyshev split of blockers from receiver), so penumbrae shrink as the blockers' share falls
 // sat_lookup.glsl: box average of the moment map from its summed-area table.
-// Catalogue mutant (sat_base pair): satKernelTexels takes the search box's mean depth for the blockers' depth (no Chebyshev split).
 //
 // Included by the lighting pass (and by shaders/sat_resolve.comp) when the filter is a SAT.
 // `sat` is the table T written by sat.comp, bound with nearest filtering, read with texelFetch.

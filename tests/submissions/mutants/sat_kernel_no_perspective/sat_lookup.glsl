@@ -1,5 +1,5 @@
+// MUTANT: per-pixel box: a spot light's penumbra without the division by the blocker's depth, lightSize·(d_r − d_b): every soft shadow several times too wide
 // sat_lookup.glsl: box average of the moment map from its summed-area table.
-// Catalogue mutant (sat_base pair): satKernelTexels drops the perspective division by d_b (a directional light's formula for a spot light).
 //
 // Included by the lighting pass (and by shaders/sat_resolve.comp) when the filter is a SAT.
 // `sat` is the table T written by sat.comp, bound with nearest filtering, read with texelFetch.

@@ -1,5 +1,5 @@
+// MUTANT: per-pixel box: relative depths instead of world depths along the light's axis in the similar triangles
 // sat_lookup.glsl: box average of the moment map from its summed-area table.
-// Catalogue mutant (sat_base pair): satKernelTexels puts relative depths, not world depths along the light's axis, into the similar triangles.
 //
 // Included by the lighting pass (and by shaders/sat_resolve.comp) when the filter is a SAT.
 // `sat` is the table T written by sat.comp, bound with nearest filtering, read with texelFetch.
