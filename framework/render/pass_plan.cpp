@@ -148,7 +148,7 @@ int cascadeCount(const Scene& scene, int i) {
 // tap of weight 1, the map itself to the bit. A SAT box of one texel is not left out: it is
 // the bilinear read lighting makes without a filter in exact arithmetic, but llvmpipe weighs
 // a bilinear read with 8 bits, and 4MSM turns that into G up to 0.9 apart at shadow edges
-// (scenes/ladder/softness_1: 5 % of its pixels), so the table stays.
+// (a 1-texel box on the softness ladder's scene: 5 % of its pixels), so the table stays.
 std::string identityFilter(const ShadowEffect& fx) {
     if (techniqueRow(fx.technique).filterInLighting) return "";
     if (fx.filter == FilterKind::Gaussian && fx.gaussianRadius == 0)
