@@ -18,8 +18,12 @@ float shadowIntensityMsm4(ShadowQuery q) {
     float kernel = satKernelTexels(uShadowMaps[q.map], c, search, q.zf, q.depthRange,
                                    q.lightSize / q.texelWorld, q.isSpot != 0,
                                    vec2(1.0, uSatMaxKernel));
-    if (kernel == -1.0) return -4.0;  // the stub: named by the renderer (noteLightingStubs)
-    return momentShadowIntensity(satBoxAverage(uShadowMaps[q.map], c, vec2(kernel)), q.zf);
+    // satKernelTexels' stub (-1): the search box stands in, and G = -4 names the function
+    // (noteLightingStubs), unless msm.glsl is a stub too (-1): that one is named first.
+    bool stub = kernel == -1.0;
+    float G = momentShadowIntensity(
+        satBoxAverage(uShadowMaps[q.map], c, vec2(stub ? search : kernel)), q.zf);
+    return stub && G != -1.0 ? -4.0 : G;
 }
 #else
 float shadowIntensityMsm4(ShadowQuery q) {
