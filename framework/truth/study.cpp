@@ -78,6 +78,10 @@ Scene rowScene(const Scene& file, const Combination& c) {
     s.shadow.satKernelTexels = float(satBoxTexels(c.radius));
     overrideTechnique(s.shadow, c.technique, c.params);
     s.shadow.filter = c.filter;
+    // Per pixel: satKernelTexels picks each box (search up to 48, boxes up to 64 texels, as
+    // scenes/penumbra.json), whatever the radius.
+    s.shadow.satPerPixel = c.perPixel;
+    if (c.perPixel) s.shadow.satKernelTexels = 48.0f, s.shadow.satMaxKernelTexels = 64.0f;
     if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
     return s;
 }

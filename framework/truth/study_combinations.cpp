@@ -30,8 +30,10 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
         // a spec set it (msm4:momentBias=1e-4) so that α can be swept like the rest.
         std::vector<std::pair<std::string, double>> params;
         double momentBias = -1.0;
+        bool perPixel = false;  // msm4:perPixel=1, like α a scene setting, not a row parameter
         for (const auto& [name, value] : allParams)
             if (name == "momentBias") momentBias = value;
+            else if (name == "perPixel" && t == Technique::Msm4) perPixel = value != 0.0;
             else params.emplace_back(name, value);
         std::vector<FilterKind> filters;
         for (const auto& f : o.filters) {
@@ -53,8 +55,10 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
                 ShadowEffect fx;
                 fx.technique = t;
                 fx.filter = f;
-                if (!kernelReachesImage(fx) && !o.radii.empty()) {  // every radius, one frame
-                    out.push_back({spec, t, params, momentBias, f, o.radii.front(), size, lightSize});
+                const bool boxPerPixel = perPixel && f == FilterKind::Sat;
+                if ((!kernelReachesImage(fx) || boxPerPixel) && !o.radii.empty()) {  // one frame
+                    out.push_back({spec, t, params, momentBias, f, o.radii.front(), size, lightSize,
+                                   boxPerPixel});
                     if (size == o.mapSizes.front() && lightSize == lightSizes.front() &&
                         o.radii.size() > 1)
                         notes.push_back(spec + ": its " + toString(f) + " kernel does not reach the "

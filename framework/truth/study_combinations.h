@@ -21,6 +21,7 @@ struct Combination {
     int radius;
     int size;
     double lightSize;  // < 0: the scene's own lights
+    bool perPixel = false;  // msm4:perPixel=1: the SAT's box per pixel (satKernelTexels)
 };
 
 // The combinations in the sweep's order; `notes` says what was narrowed and why.
