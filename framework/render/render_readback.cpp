@@ -23,7 +23,7 @@ void noteStub(const ShaderLibrary& library, RenderResult& result, const std::str
 
 void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
               const PassPlan& plan, ShadowMapSet& maps, RenderResult& result) {
-    const bool moments = row.storeDefine.rfind("SL_STORE_MOMENTS4", 0) == 0;
+    const bool moments = row.store == StoreKind::Moments4 || row.store == StoreKind::Moments4_16bit;
     for (auto& [id, m] : maps) {
         const int li = id.light;
         const std::string suffix =

@@ -219,7 +219,7 @@ ShadowEffect readShadow(const Reader& R, const Node& n, bool perspective) {
     if (auto v = n["filter"]) readFilter(R, v, fx);
     if (auto v = n["momentBias"]) fx.momentBias = float(R.number(v, Range::closed(0, 0.1)));
     if (auto v = n["depthBias"]) fx.depthBias = float(R.number(v, Range::closed(0, 0.1)));
-    // The technique's row checks its filter and parameters (render/technique.h).
+    // The technique's row checks its filter and parameters (technique.h).
     validateTechnique(fx, bool(n["filter"]), n["parameters"].v, R.file(), n.ptr);
     return fx;
 }
@@ -437,6 +437,6 @@ const char* toString(FilterKind f) {
     }
     return "?";
 }
-// toString(Technique): the technique table's name (render/technique.cpp).
+// toString(Technique): the technique table's name (technique.cpp).
 
 }  // namespace sl
