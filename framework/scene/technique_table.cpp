@@ -100,9 +100,9 @@ std::vector<TechniqueRow> makeTable() {
          .clear = clearVsm, .parameters = vsmParameters},
         {.name = "esm", .summary = "exponential shadow maps", .stored = "e^{c (z − 1)}",
          .filters = any, .file = "techniques/esm.glsl", .store = StoreKind::File,
-         .parameters = {{.name = "exponent", .defaultValue = 80.0, .min = 1.0, .max = 100.0,
-                         .meaning = "c of e^{c (z − 1)}, clamped to 80 (float32): larger is "
-                                    "sharper, smaller leaks less light at contact"}}},
+         .parameters = {{.name = "exponent", .defaultValue = 80.0, .min = 1.0, .max = 80.0,
+                         .meaning = "c of e^{c (z − 1)}, at most 80 (e^{-c} a normal float32): "
+                                    "larger is sharper and leaks less light at contact"}}},
         {.name = "evsm2", .summary = "exponential VSM, positive warp",
          .stored = "(e^{c+z'}, e^{2c+z'})", .channels = 2, .filters = any,
          .file = "techniques/evsm2.glsl", .store = StoreKind::Evsm2, .clear = clearEvsm,
