@@ -1,8 +1,9 @@
 // cli_report: `shadowlab report` renders the images the assignment's report asks for from a
 // solution's own stages (the student's, by default; `./kit report`):
 //   - the moment map before and after the blur (moments_before_blur.png, moments_after_blur.png),
-//   - the softness ladder, scenes/ladder/softness_<i>.json, from "just anti-aliased" to "a very
-//     wide light" (softness_<i>.png),
+//   - the softness ladder, scenes/ladder/softness_<i>.json, from "a point-like light" to "a very
+//     wide light" (softness_<i>.png), each pixel's box from satKernelTexels,
+//   - one scene's penumbra growing with distance, scenes/penumbra.json (penumbra.png),
 // and one index.html that shows them with captions. Every link is relative and nothing else is
 // written, so the folder can be zipped and handed in. Stubbed stages do not stop it: their
 // images show the stub value in magenta and the page names the stages still to implement.
@@ -27,7 +28,7 @@ namespace {
 
 struct LadderStep {
     Scene scene;
-    std::string phrase;  // "just anti-aliased" ... from the scene's description
+    std::string phrase;  // "a point-like light" ... from the scene's description
 };
 
 // scenes/ladder/softness_<i>.json in the order of i (softness_10 after softness_9).
@@ -57,7 +58,8 @@ std::string ladderPhrase(const std::string& description) {
 }
 
 // The same softness with the other filter: a Gaussian with the variance of the SAT's box of
-// width w (σ = w / √12), cut at 2σ (at least one texel).
+// width w (σ = w / √12), cut at 2σ (at least one texel); a per-pixel box's w is its largest
+// search box, which the ladder widens with the light.
 void useFilter(ShadowEffect& fx, FilterKind filter) {
     if (filter == fx.filter) return;
     if (filter == FilterKind::Gaussian) {
@@ -72,7 +74,10 @@ void useFilter(ShadowEffect& fx, FilterKind filter) {
 
 std::string filterWords(const ShadowEffect& fx) {
     char s[160];
-    if (fx.filter == FilterKind::Sat)
+    if (fx.filter == FilterKind::Sat && fx.satPerPixel)
+        std::snprintf(s, sizeof s, "summed-area table, per-pixel box (satKernelTexels: search up "
+                      "to %.3g, box up to %.3g texels)", fx.satKernelTexels, fx.satMaxKernelTexels);
+    else if (fx.filter == FilterKind::Sat)
         std::snprintf(s, sizeof s, "summed-area table, box of %.3g texels", fx.satKernelTexels);
     else
         std::snprintf(s, sizeof s, "Gaussian, radius %d, σ = %.2f texels", fx.gaussianRadius,
@@ -245,6 +250,22 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
                 ")</figcaption></figure>\n<p>" + htmlEscape(cap) + notesHtml(r.stubNotes) + "</p>\n";
         }
     }
+    // The second figure: one scene's penumbra growing with the blocker-receiver distance.
+    std::string penumbraHtml;
+    {
+        Scene scene = loadScene((root / "scenes/penumbra.json").string());
+        scene.cameras.resize(1);
+        scaleScene(scene, size);
+        useFilter(scene.shadow, filter);
+        const RenderResult r = renderer.render(scene, planPasses(scene));
+        for (const auto& n : r.stubNotes)
+            if (std::find(allNotes.begin(), allNotes.end(), n) == allNotes.end()) allNotes.push_back(n);
+        writePngPreview(r.images.at("final"), out / "penumbra.png", true);
+        penumbraHtml = "<figure><a href=\"penumbra.png\"><img src=\"penumbra.png\" "
+                       "alt=\"penumbra.png\"></a><figcaption>" +
+                       htmlEscape(filterWords(scene.shadow)) + notesHtml(r.stubNotes) +
+                       "</figcaption></figure>\n";
+    }
 
     std::ofstream html(out / "index.html");
     html << "<!doctype html><meta charset=\"utf-8\"><title>Moment shadow mapping: report images"
@@ -266,14 +287,19 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
             "the raw window; the same scale in both images, so they compare. Blurring the "
             "moments averages the depth distribution each texel's kernel sees: sharp outlines "
             "become ramps.</p>\n<div class=\"row moments\">\n" << momentHtml
-         << "</div>\n<h2>The softness ladder</h2>\n<p>The same scene, one light, the filter "
-            "widening step by step: from just anti-aliased to a very wide light. Wider kernels "
-            "average the moments of more depths, so the reconstructed shadow's penumbra widens.</p>\n"
-            "<div class=\"row\">\n" << ladderHtml << "</div>\n";
+         << "</div>\n<h2>The softness ladder</h2>\n<p>The same scene, one light growing step "
+            "by step: from a point-like light to a very wide one. With the summed-area table each "
+            "pixel's box is the penumbra its blockers cast (satKernelTexels), so shadows widen with "
+            "the light and stay sharp where a caster meets the ground; wider boxes average the "
+            "moments of more depths, so the reconstructed shadow's penumbra widens.</p>\n"
+            "<div class=\"row\">\n" << ladderHtml << "</div>\n"
+         << "<h2>The penumbra grows with distance</h2>\n<p>One scene (scenes/penumbra.json): "
+            "the post's shadow is sharp at its foot and widens toward its tip's; the raised slab's "
+            "shadow is wide all round.</p>\n<div class=\"row\">\n" << penumbraHtml << "</div>\n";
     html.close();
 
     std::cout << "wrote " << (out / "index.html").string() << ", moments_before_blur.png, "
-              << "moments_after_blur.png and softness_1.." << ladder.size() << ".png (" << solution
+              << "moments_after_blur.png, softness_1.." << ladder.size() << ".png and penumbra.png (" << solution
               << ", " << toString(filter) << " filter: " << why << ")\n";
     for (const auto& n : allNotes) std::cout << "note: " << n << "\n";
     return Ok;

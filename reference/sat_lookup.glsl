@@ -55,3 +55,44 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
               - (satBelow(sat, vec2(hi.x, lo.y), size) - satBelow(sat, lo, size));
     return vec4(sum / (double(extent.x) * double(extent.y)));
 }
+
+// The box each pixel filters with, in map texels: the width of the penumbra a receiver at
+// relative depth zr gets from the blockers in front of it (contact hardening). Two steps, both
+// from the table in a constant number of reads:
+//   1. blocker search, variance soft shadow mapping (Yang et al. 2010): over the search box,
+//      mean μ = b1 and variance σ² = b2 − μ². Chebyshev's bound p = σ² / (σ² + (zr − μ)²)
+//      estimates the fraction of the box that lies at or behind the receiver (unoccluded);
+//      the box's mean is p·zr + (1 − p)·z_b, so the blockers' mean depth is
+//      z_b = (μ − p·zr) / (1 − p).
+//   2. penumbra by similar triangles (PCSS, Fernando 2005) with world depths d along the
+//      light's axis: w = lightTexels·(d_r − d_b) / d_b (perspective), lightTexels·(d_r − d_b)
+//      (orthographic), clamped to kernelRange.
+// The box must not jump where the estimate is unsure: a blocker share 1 − p near 0 places its
+// blockers anywhere (z_b is a ratio of two vanishing numbers), so the penumbra fades in over
+// the first 5 % of share, from the smallest box. Then the box is continuous in the moments,
+// and two solutions whose tables round differently choose nearly the same box.
+float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, vec2 depthRange,
+                      float lightTexels, bool perspective, vec2 kernelRange)
+{
+    vec4 b = satBoxAverage(sat, center, vec2(searchTexels));
+    float mu = b.x;
+    // σ² is a difference of nearly equal floats (b2 and μ²): a floor keeps a flat box from
+    // giving 0 / 0 below, and is far below any variance a real depth step makes.
+    float variance = max(b.y - mu * mu, 1e-7);
+    // The receiver in front of (or at) the mean: Chebyshev says nothing lies in front of it.
+    if (zr <= mu)
+        return kernelRange.x;
+    float d = zr - mu;
+    float p = variance / (variance + d * d);
+    float share = 1.0 - p;  // the blockers' share of the search box
+    // No blockers to speak of (and no 0 / 0 below); the fade makes this the limit anyway.
+    if (share < 1e-6)
+        return kernelRange.x;
+    float zb = clamp((mu - p * zr) / share, 0.0, zr);
+    float dr = mix(depthRange.x, depthRange.y, zr);
+    float db = mix(depthRange.x, depthRange.y, zb);
+    // Perspective: the emitter's width scales by (d_r − d_b) / d_b from blocker to receiver;
+    // d_b is kept off 0 (a blocker on the light itself).
+    float w = lightTexels * (dr - db) / (perspective ? max(db, 1e-4 * depthRange.y) : 1.0);
+    return mix(kernelRange.x, clamp(w, kernelRange.x, kernelRange.y), clamp(share / 0.05, 0.0, 1.0));
+}

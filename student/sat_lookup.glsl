@@ -1,4 +1,5 @@
-// sat_lookup.glsl: box average of the moment map from its summed-area table.
+// sat_lookup.glsl: box average of the moment map from its summed-area table, and the box
+// each pixel chooses from its situation.
 // Stage contract: docs/stage_contract.md (the part that concerns this file is repeated here).
 //
 // Included by the lighting pass and by shaders/sat_resolve.comp when the filter is a
@@ -43,4 +44,42 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
     // hundreds of texels; the point of the table is that the cost does not depend on the box
     // (16 entries, whatever its size). llvmpipe's SIMD lanes run both sides of every branch.
     return vec4(-1.0);
+}
+
+// float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr,
+//                       vec2 depthRange, float lightTexels, bool perspective, vec2 kernelRange)
+//   The width, in map texels, of the box the lighting pass filters this pixel with, when the
+//   scene asks for a per-pixel kernel (filter "kernel": "per-pixel"): the penumbra that the
+//   blockers in front of the receiver cast, sharp where they touch it, wide far away.
+//   sat          the table, as for satBoxAverage
+//   center       the receiver's position in the map, texel units
+//   searchTexels the width of the box to search for blockers in (the framework's choice: the
+//                penumbra a blocker at the near plane would cast, clamped)
+//   zr           the receiver's relative depth (the scene's depth bias already subtracted)
+//   depthRange   (near, far): relative depth z lies at world depth near + z·(far − near)
+//                along the light's axis
+//   lightTexels  the light's size in map texels at the receiver: perspective (spot) lights,
+//                the emitter's width; orthographic (directional) ones, per world unit of
+//                blocker–receiver distance
+//   perspective  true for a spot light
+//   kernelRange  (smallest, largest) box the result is clamped to
+//   returns      the penumbra width w in texels, clamped to kernelRange; kernelRange.x where
+//                nothing lies in front of the receiver
+//
+// Stub value: until implemented, it returns -1; the lighting pass then hatches the pixel in
+// magenta and the renderer names this function. A correct solution never returns less
+// than kernelRange.x.
+
+float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, vec2 depthRange,
+                      float lightTexels, bool perspective, vec2 kernelRange)
+{
+    // TODO: not implemented yet: satKernelTexels
+    //  1. Blocker search: from the first two moments averaged over the search box, estimate
+    //     the mean relative depth z_b of what lies in front of the receiver (the course's
+    //     handout, "determine the amount of blur desired based on the pixel's environment";
+    //     docs/handout.md names the estimate to use). Decide what a receiver with nothing
+    //     in front of it gets.
+    //  2. Penumbra: similar triangles between the light, the blockers and the receiver, with
+    //     world depths along the light's axis; then clamp.
+    return -1.0;
 }

@@ -35,6 +35,12 @@ inline const std::vector<Target>& targets() {
          {"sampler2D", "vec2", "vec2"},
          "wide_blur",
          {"wide_blur: sat"}},
+        {"satKernelTexels",
+         "sat_lookup.glsl",
+         "float",
+         {"sampler2D", "vec2", "float", "float", "vec2", "float", "bool", "vec2"},
+         "penumbra",
+         {"penumbra: sat"}},
         {"gaussian_blur.comp", "gaussian_blur.comp", "", {}, "classic", {"classic: gaussian"}},
         {"sat.comp", "sat.comp", "", {}, "wide_blur", {"wide_blur: sat"}},
     };

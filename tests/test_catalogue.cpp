@@ -220,6 +220,21 @@ void checkStageOutput(const Entry& e) {
                 EXPECT_LE(compare(a, b, kTexelTolerance).fraction, 1e-2) << key;
             }
         }
+        if (e.stage == "sat" && s.shadow.satPerPixel) {
+            // satKernelTexels, as the grader's sat stage checks it (sat_kernel_ladder.h): the
+            // boxes, in texels, on the reference's moments. A mutant must move a box by a
+            // texel or more; correct variants stay within kKernelSpread texels.
+            const Image& raw = ref.images.at("moments_raw");
+            const Image mine = satKernelLadder(library, s, raw);
+            const Image want = satKernelLadder(test::library("reference"), s, raw);
+            const Difference d = compare(mine, want, 0.1);
+            measured += sceneName + "/kernels: " + d.str() + "; ";
+            std::printf("[catalogue] %-31s %-11s %-9s %-16s %s\n", e.name.c_str(),
+                        e.kind.c_str(), sceneName.c_str(), "kernels", d.str().c_str());
+            if (e.mutant() && d.maxAbs >= 1.0 && d.fraction >= kMutantMinFraction)
+                visibleSomewhere = true;
+            if (!e.mutant()) EXPECT_LE(d.maxAbs, kKernelSpread) << "kernels: " << d.str();
+        }
         if (!e.mutant() && e.stage == "msm") {
             // And near the float64 oracle at the depths where G is hardest (just in front of
             // and behind each texel's mean depth, which no rendered image need hit): an

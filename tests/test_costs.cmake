@@ -1,8 +1,7 @@
 # The longest tests, started first by `ctest -j` on a build that has no timing history yet
 # (a fresh clone: CTest otherwise runs them in list order, and one of them starting last
-# leaves a core idle for its whole run). Seconds measured on 2 cores (a fresh clone's run,
-# 2026-12-01, Zen 3; docs/performance.md, "The test suite"); later runs use CTest's own
-# record (Testing/Temporary/CTestCostData.txt).
+# leaves a core idle for its whole run). Seconds: a fresh clone's run on 2 cores; later runs
+# use CTest's own record (Testing/Temporary/CTestCostData.txt).
 # A name no longer in the suite is ignored.
 set(longest_tests
   KitStudent.TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand 66

@@ -240,6 +240,12 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
         if (key == "momentShadowIntensity") f["moments.glsl"] = refMoments;
         if (key == "satBoxAverage") f["sat.comp"] = test::readFile(naive / "sat.comp");
         if (key == "sat.comp") f["sat_lookup.glsl"] = test::readFile(naive / "sat_lookup.glsl");
+        if (key == "satKernelTexels") {  // the reference's table and box averages around it
+            f["sat.comp"] = test::readFile(root / "reference/sat.comp");
+            f["sat_lookup.glsl"] =
+                replaceFunction(test::readFile(root / "reference/sat_lookup.glsl"), "satKernelTexels",
+                                definitionOf(f["sat_lookup.glsl"], "satKernelTexels"));
+        }
         return f;
     };
 
@@ -339,6 +345,11 @@ TEST(KitAttack, NoShippedFunctionOrShaderScoresAsAStage) {
     for (const char* rel : {"reference/moments.glsl", "reference/msm.glsl",
                             "tests/submissions/fragile/naive_sat/sat_lookup.glsl"})
         controlSources.push_back(makeSource(rel, test::readFile(root / rel), false, root));
+    // The reference's satKernelTexels alone (its satBoxAverage reads the reference's table).
+    controlSources.push_back(makeSource(
+        "reference/sat_lookup.glsl",
+        definitionOf(test::readFile(root / "reference/sat_lookup.glsl"), "satKernelTexels"), false,
+        root));
     controlSources.push_back(makeSource("tests/oracles/msm_float_mirror.h",
                                         test::readFile(root / "tests/oracles/msm_float_mirror.h"), true,
                                         root));

@@ -53,7 +53,8 @@ TEST(Report, ReferenceImagesAreLinkedBlurredAndSofterAlongTheLadder) {
     const size_t steps = ladderSteps();
     ASSERT_GE(steps, 4u);
 
-    std::vector<std::string> pngs = {"moments_before_blur.png", "moments_after_blur.png"};
+    std::vector<std::string> pngs = {"moments_before_blur.png", "moments_after_blur.png",
+                                     "penumbra.png"};
     for (size_t i = 1; i <= steps; ++i) pngs.push_back("softness_" + std::to_string(i) + ".png");
     const std::string html = test::readFile(out / "index.html");
     for (const auto& p : pngs) {

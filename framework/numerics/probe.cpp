@@ -50,8 +50,8 @@ std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
     return runProbe<glm::vec4>(program, inputs.size());
 }
 
-std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Image& moments,
-                                          const std::vector<glm::vec4>& boxes) {
+// The solution's table of `moments`, built by its sat.comp with the renderer's dispatches.
+static Texture probeSatTable(const ShaderLibrary& library, const Image& moments) {
     if (moments.channels != 4 || moments.empty())
         throw std::invalid_argument("probe: the SAT probe needs a non-empty RGBA moment map");
     Renderer renderer(library);  // its satPass: the same dispatch as a render
@@ -63,6 +63,30 @@ std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Im
     renderer.satPass(src, rows, {1, 0});
     renderer.satPass(rows, table, {0, 1});
     gl::MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    return table;
+}
+
+std::vector<float> probeSatKernelTexels(const ShaderLibrary& library, const Image& moments,
+                                        const std::vector<SatKernelCase>& cases) {
+    Texture table = probeSatTable(library, moments);
+    GlProgram program = GlProgram::compute(library, "probe_sat_kernel.comp", {"SL_FILTER_SAT"});
+    program.use();
+    program.set("uSat", 0);
+    gl::BindTextureUnit(0, table.id());
+    std::vector<glm::vec4> packed;
+    for (const SatKernelCase& c : cases) {
+        packed.emplace_back(c.center, c.searchTexels, c.zr);
+        packed.emplace_back(c.depthRange, c.lightTexels, c.perspective ? 1.0f : 0.0f);
+        packed.emplace_back(c.kernelRange, 0.0f, 0.0f);
+    }
+    BufferHandle in = createBuffer(packed.data(), GLsizeiptr(std::max<size_t>(packed.size(), 1) * 16));
+    gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
+    return runProbe<float>(program, cases.size());
+}
+
+std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Image& moments,
+                                          const std::vector<glm::vec4>& boxes) {
+    Texture table = probeSatTable(library, moments);
     GlProgram program = GlProgram::compute(library, "probe_sat_lookup.comp", {"SL_FILTER_SAT"});
     program.use();
     program.set("uSat", 0);

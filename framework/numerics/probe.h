@@ -27,6 +27,22 @@ std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
 std::vector<glm::vec4> probeSatBoxAverage(const ShaderLibrary& library, const Image& moments,
                                           const std::vector<glm::vec4>& boxes);
 
+// One receiver of satKernelTexels (sat_lookup.glsl): its arguments besides the table.
+struct SatKernelCase {
+    glm::vec2 center{0.0f};   // texel units
+    float searchTexels = 1.0f;
+    float zr = 0.0f;          // relative depth
+    glm::vec2 depthRange{0.0f, 1.0f};
+    float lightTexels = 0.0f;
+    bool perspective = true;
+    glm::vec2 kernelRange{1.0f, 64.0f};
+};
+
+// satKernelTexels(table, case...) per case, where `table` is what the solution's sat.comp
+// makes of `moments` (as probeSatBoxAverage).
+std::vector<float> probeSatKernelTexels(const ShaderLibrary& library, const Image& moments,
+                                        const std::vector<SatKernelCase>& cases);
+
 // What the solution's gaussian_blur.comp makes of `map` (RGBA, bottom row first): the pass
 // along x if alongX, then the pass along y if alongY, each the renderer's own dispatch with
 // the renderer's weights (Renderer::gaussianWeights(radius, sigma)).

@@ -8,6 +8,10 @@
 //   instructions every thread executed, counted by valgrind's callgrind (millions), which no
 //   other process can change. The clock calls two marker functions callgrind is told about
 //   (zero the counts before one, dump them after the other) and reads the dump back.
+// - "cycles" (SHADOWLAB_COST=cycles, tools/cost_exact.sh --cycles): the same with callgrind's
+//   cache simulation, as its cycle estimate (instructions + 10 per first-level miss + 100 per
+//   last-level miss, caches of a fixed size): exact too, and it sees memory traffic, which the
+//   instruction count does not (a lookup far apart in a large table costs misses, not work).
 // Measurements must not nest: one begin, one end.
 #pragma once
 
@@ -20,7 +24,8 @@ double processCpuMillis();
 
 // Start measuring (before the work is issued; the caller has glFinished what came before).
 void costBegin();
-// The cost since costBegin (after the work's glFinish): CPU ms, or millions of instructions.
+// The cost since costBegin (after the work's glFinish): CPU ms, or millions of instructions
+// (or estimated cycles).
 double costEnd();
 
 // "CPU ms: process CPU time (all threads) around glFinish, LP_NUM_THREADS=2", or the

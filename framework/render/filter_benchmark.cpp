@@ -266,13 +266,14 @@ std::string formatBenchReport(const BenchReport& report) {
                   "cost: %s\n"
                   "%d² RGBA32F, %d interleaved repeats; ratio = median pass / median baseline, "
                   "spread = min–max over repeats of pass / baseline of the same repeat, "
-                  "goal: issue 10's, on the ratio;\n"
+                  "goal: docs/performance.md's, on the ratio;\n"
                   "tiled = median pass / median of as many passes of the %d-texel copy "
                   "(the floor of moving the texels)\n\n",
                   report.method.c_str(), report.size, report.repeats, report.tileCopyTexels);
     out += line;
     const bool ms = report.method.rfind("CPU ms", 0) == 0 || report.method.empty();
-    out += std::string("| pass | median ") + (ms ? "ms" : "Minstr") +
+    const bool cycles = report.method.find("estimated cycles") != std::string::npos;
+    out += std::string("| pass | median ") + (ms ? "ms" : cycles ? "Mcycles" : "Minstr") +
            " | baseline | ratio | spread | goal | tiled |\n"
            "|---|---:|---|---:|---:|---|---:|\n";
     for (const BenchRow& row : report.rows) {

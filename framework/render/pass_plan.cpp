@@ -119,8 +119,13 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
         pass({PassKind::GaussianY, i, -1, why, TextureRole::Filtered});
         return;
     }
-    char why[64];
-    std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
+    char why[128];
+    if (fx.satPerPixel)
+        std::snprintf(why, sizeof why,
+                      "sat filter, per-pixel kernel (satKernelTexels: search <= %.2f, box 1-%.2f "
+                      "texels)", fx.satKernelTexels, fx.satMaxKernelTexels);
+    else
+        std::snprintf(why, sizeof why, "sat filter, kernel %.2f texels", fx.satKernelTexels);
     // The table has two texels per entry (satTableWidth).
     for (TextureRole role : {TextureRole::Scratch, TextureRole::Sat})
         add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, satTableWidth(n), n, map.layers, 16));
@@ -143,7 +148,7 @@ int cascadeCount(const Scene& scene, int i) {
 // tap of weight 1, the map itself to the bit. A SAT box of one texel is not left out: it is
 // the bilinear read lighting makes without a filter in exact arithmetic, but llvmpipe weighs
 // a bilinear read with 8 bits, and 4MSM turns that into G up to 0.9 apart at shadow edges
-// (scenes/ladder/softness_1: 5 % of its pixels), so the table stays.
+// (a 1-texel box on the softness ladder's scene: 5 % of its pixels), so the table stays.
 std::string identityFilter(const ShadowEffect& fx) {
     if (techniqueRow(fx.technique).filterInLighting) return "";
     if (fx.filter == FilterKind::Gaussian && fx.gaussianRadius == 0)

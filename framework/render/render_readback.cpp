@@ -70,13 +70,15 @@ void readBack(const ShaderLibrary& library, const TechniqueRow& row, const Shado
 
 void noteLightingStubs(const ShaderLibrary& library, const TechniqueRow& row, const Image& shadow,
                        RenderResult& result) {
-    bool msmStub = false, depthStub = false;
+    bool msmStub = false, depthStub = false, kernelStub = false;
     for (std::size_t i = 0, n = std::size_t(shadow.width) * shadow.height; i < n; ++i) {
         const float g = shadow.pixels[i * shadow.channels];
         msmStub = msmStub || g == -1.0f || g == -3.0f;
         depthStub = depthStub || g == -2.0f || g == -3.0f;
+        kernelStub = kernelStub || g == -4.0f;  // msm4.glsl: satKernelTexels returned -1
     }
     if (depthStub) noteStub(library, result, "moments.glsl", "relativeDepth");
+    if (kernelStub) noteStub(library, result, "sat_lookup.glsl", "satKernelTexels");
     if (msmStub && row.msmStage) noteStub(library, result, "msm.glsl", "momentShadowIntensity");
 }
 

@@ -113,6 +113,8 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
     p.set("uMomentBias", fx.momentBias);
     p.set("uDepthBias", fx.depthBias);
     p.set("uSatKernel", fx.satKernelTexels);
+    p.set("uSatSearchTexels", fx.satKernelTexels);  // per-pixel: the search box's limit
+    p.set("uSatMaxKernel", fx.satMaxKernelTexels);
     constexpr int kSlots = kMaxLights * kMaxCascades;  // SL_MAX_LIGHTS · SL_MAX_CASCADES
     std::vector<glm::vec3> eye, forward, color;
     std::vector<int> isSpot, mapIndex, cascades, units(kSlots);

@@ -96,6 +96,10 @@ struct ShadowEffect {
     int gaussianRadius = 4;               // taps: 2r + 1
     float gaussianSigma = 0.0f;           // 0: radius / 2
     float satKernelTexels = 9.0f;         // box width in texels, fractional allowed
+    // "kernel": "per-pixel": each pixel's box from the solution's satKernelTexels (msm4).
+    // satKernelTexels is then the search box's largest width (and the filtered-moments image's).
+    bool satPerPixel = false;
+    float satMaxKernelTexels = 64.0f;     // per-pixel: the largest filter box, texels
     float momentBias = 3.0e-5f;           // α
     float depthBias = 0.0f;               // subtracted from the fragment's relative depth
     // The technique's own parameters as the scene gives them (`shadow.parameters`); the

@@ -181,12 +181,32 @@ void readFilter(const Reader& R, const Node& n, ShadowEffect& fx) {
             fx.gaussianSigma = 0.5f * float(fx.gaussianRadius);
             if (auto v = n["sigma"]) fx.gaussianSigma = float(R.number(v, Range::positive()));
             break;
-        case FilterKind::Sat:
-            R.object(n, {"type", "kernel"}, "filter \"sat\"");
+        case FilterKind::Sat: {
             // The box may not be wider than the map it averages.
-            if (auto v = n["kernel"])
+            const Node k = n["kernel"];
+            fx.satPerPixel = k && k.v->is_string() && k.v->get<std::string>() == "per-pixel";
+            if (!fx.satPerPixel) {
+                R.object(n, {"type", "kernel"}, "filter \"sat\" with a fixed kernel");
+                if (k && !k.v->is_number())
+                    R.fail(k, "a box width in texels in [1, " + std::to_string(fx.mapSize) +
+                                  "] or \"per-pixel\"");
+                if (k) fx.satKernelTexels = float(R.number(k, Range::closed(1, fx.mapSize)));
+                break;
+            }
+            // Per pixel: the solution's satKernelTexels chooses each box (msm4's lighting).
+            R.object(n, {"type", "kernel", "searchTexels", "maxKernelTexels"},
+                     "filter \"sat\" with kernel \"per-pixel\"");
+            fx.satKernelTexels = 32.0f;
+            if (auto v = n["searchTexels"])
                 fx.satKernelTexels = float(R.number(v, Range::closed(1, fx.mapSize)));
+            if (auto v = n["maxKernelTexels"])
+                fx.satMaxKernelTexels = float(R.number(v, Range::closed(1, fx.mapSize)));
+            if (!techniqueRow(fx.technique).perPixelSat)
+                R.fail(k, "a box width in texels: \"per-pixel\" is the msm4 technique's (its "
+                          "lighting asks sat_lookup.glsl's satKernelTexels), not " +
+                              std::string(toString(fx.technique)) + "'s");
             break;
+        }
     }
 }
 

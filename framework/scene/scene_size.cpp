@@ -19,6 +19,7 @@ void scaleScene(Scene& scene, int size) {
     const double g = double(map) / fx.mapSize;
     fx.mapSize = map;
     fx.satKernelTexels = float(std::max(1.0, fx.satKernelTexels * g));
+    fx.satMaxKernelTexels = float(std::max(1.0, fx.satMaxKernelTexels * g));
     fx.gaussianRadius = std::max(1, int(std::lround(fx.gaussianRadius * g)));
     fx.gaussianSigma = float(fx.gaussianSigma * g);
 }

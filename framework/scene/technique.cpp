@@ -168,6 +168,7 @@ std::vector<std::string> techniqueDefines(const ShadowEffect& fx) {
     if (row.msmStage) d.push_back("SL_STAGE_MSM");
     if (fx.filter == FilterKind::Gaussian) d.push_back("SL_FILTER_GAUSSIAN");
     if (fx.filter == FilterKind::Sat) d.push_back("SL_FILTER_SAT");
+    if (fx.filter == FilterKind::Sat && fx.satPerPixel) d.push_back("SL_SAT_PER_PIXEL");
     for (const std::string& limit : limitDefines()) d.push_back(limit);
     return d;
 }
@@ -216,6 +217,8 @@ void overrideTechnique(ShadowEffect& fx, Technique t,
     if (t != fx.technique) fx.parameters.clear();
     fx.technique = t;
     if (!allows(row, fx.filter)) fx.filter = row.filters.front();
+    // A per-pixel SAT box is msm4's lighting (satKernelTexels); others keep the search box.
+    if (!row.perPixelSat) fx.satPerPixel = false;
     for (const auto& [name, value] : parameters) {
         const TechniqueParameter* p = findParameter(row, name);
         if (!p)

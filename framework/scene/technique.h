@@ -63,6 +63,9 @@ struct TechniqueRow {
     bool msmStage = false;            // G comes from the solution's msm.glsl (SL_STAGE_MSM)
     bool secondDepth = false;         // a second (peeling) shadow pass stores the midpoint
     bool blockerSearch = false;       // the lighting pass searches blockers first (PCSS, msm-soft)
+    // Its lighting can take a per-pixel SAT box (sat_lookup.glsl's satKernelTexels, a scene's
+    // "kernel": "per-pixel", SL_SAT_PER_PIXEL); other rows keep the scene's fixed box.
+    bool perPixelSat = false;
     // Under shaders/: defines shadowIntensity<X>(ShadowQuery) as SL_SHADOW_INTENSITY, and
     // techniqueStore(z) when `store` is File. The programs include it as SL_TECHNIQUE_FILE.
     std::string file{};

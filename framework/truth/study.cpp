@@ -42,6 +42,7 @@ struct Combination {
     int radius;
     int size;
     double lightSize;  // < 0: the scene's own lights
+    bool perPixel = false;  // msm4:perPixel=1: the SAT's box per pixel (satKernelTexels)
 };
 
 FilterKind filterFromName(const std::string& name) {
@@ -63,8 +64,10 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
         // a spec set it (msm4:momentBias=1e-4) so that α can be swept like the rest.
         std::vector<std::pair<std::string, double>> params;
         double momentBias = -1.0;
+        bool perPixel = false;  // msm4:perPixel=1, like α a scene setting, not a row parameter
         for (const auto& [name, value] : allParams)
             if (name == "momentBias") momentBias = value;
+            else if (name == "perPixel" && row.perPixelSat) perPixel = value != 0.0;
             else params.emplace_back(name, value);
         std::vector<FilterKind> filters;
         for (const auto& f : o.filters) {
@@ -86,8 +89,10 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
                 ShadowEffect fx;
                 fx.technique = t;
                 fx.filter = f;
-                if (!kernelReachesImage(fx) && !o.radii.empty()) {  // every radius, one frame
-                    out.push_back({spec, t, params, momentBias, f, o.radii.front(), size, lightSize});
+                const bool boxPerPixel = perPixel && f == FilterKind::Sat;
+                if ((!kernelReachesImage(fx) || boxPerPixel) && !o.radii.empty()) {  // one frame
+                    out.push_back({spec, t, params, momentBias, f, o.radii.front(), size, lightSize,
+                                   boxPerPixel});
                     if (size == o.mapSizes.front() && lightSize == lightSizes.front() &&
                         o.radii.size() > 1)
                         notes.push_back(spec + ": its " + toString(f) + " kernel does not reach the "
@@ -145,6 +150,10 @@ Scene rowScene(const Scene& file, const Combination& c) {
     s.shadow.satKernelTexels = float(satBoxTexels(c.radius));
     overrideTechnique(s.shadow, c.technique, c.params);
     s.shadow.filter = c.filter;
+    // Per pixel: satKernelTexels picks each box (search up to 48, boxes up to 64 texels, as
+    // scenes/penumbra.json), whatever the radius.
+    s.shadow.satPerPixel = c.perPixel;
+    if (c.perPixel) s.shadow.satKernelTexels = 48.0f, s.shadow.satMaxKernelTexels = 64.0f;
     if (c.momentBias >= 0) s.shadow.momentBias = float(c.momentBias);
     return s;
 }

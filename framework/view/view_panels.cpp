@@ -47,6 +47,13 @@ void shadowSettings(const Scene& scene, std::vector<SettingEdit>& edits) {
             edits.push_back({"shadow.filter.sigma", sigma});
         ImGui::SameLine();
         if (ImGui::SmallButton("r/2")) edits.push_back({"shadow.filter.sigma", nullptr});
+    } else if (fx.filter == FilterKind::Sat && fx.satPerPixel) {
+        // Each pixel's box is satKernelTexels': only its limits are the scene's.
+        float search = fx.satKernelTexels, largest = fx.satMaxKernelTexels;
+        if (ImGui::SliderFloat("search", &search, 1.0f, 128.0f, "%.1f texels", ImGuiSliderFlags_Logarithmic))
+            edits.push_back({"shadow.filter.searchTexels", search});
+        if (ImGui::SliderFloat("largest box", &largest, 1.0f, 128.0f, "%.1f texels", ImGuiSliderFlags_Logarithmic))
+            edits.push_back({"shadow.filter.maxKernelTexels", largest});
     } else if (fx.filter == FilterKind::Sat) {
         float kernel = fx.satKernelTexels;
         if (ImGui::SliderFloat("kernel", &kernel, 1.0f, 128.0f, "%.1f texels", ImGuiSliderFlags_Logarithmic))

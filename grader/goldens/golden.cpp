@@ -19,6 +19,7 @@
 #include "pass_plan.h"
 #include "paths.h"
 #include "renderer.h"
+#include "sat_kernel_ladder.h"
 #include "scene.h"
 #include "scene_list.h"
 #include "scene_size.h"
@@ -109,6 +110,9 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
     const Scene& scene = *gs.scene;
     Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
     RenderResult result = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
+    if (scene.shadow.filter == FilterKind::Sat && scene.shadow.satPerPixel)  // the sat stage's
+        result.images[kSatKernelImage] =
+            satKernelLadder(renderer.library(), scene, result.images.at("moments_raw"));
     const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
         auto it = result.images.find(name);
         return it == result.images.end() ? nullptr : &it->second;

@@ -16,6 +16,7 @@
 #include "grader.h"
 
 #include "depth_ladder.h"
+#include "sat_kernel_ladder.h"
 #include "exit_codes.h"
 #include "gl_context.h"
 #include "msm_robustness.h"
@@ -189,6 +190,8 @@ void runWorker(const WorkerArgs& a) {
         }
         gl::Finish();
         result.images["moments_filtered"] = dst.read();
+        if (sat && fx.satPerPixel)  // satKernelTexels on the same moments (sat_kernel_ladder.h)
+            result.images[kSatKernelImage] = satKernelLadder(makeLibrary(a), scene, input);
     } else if (is(a, Stage::Msm)) {
         // Lighting only, from the reference's filtered moments (a file: isolated with the
         // goldens alone), sampled bilinearly whatever the scene's filter.
@@ -210,6 +213,9 @@ void runWorker(const WorkerArgs& a) {
         if (is(a, Stage::Moments))  // relativeDepth outside [near, far] too (depth_ladder.h)
             result.images[kDepthLadderImage] =
                 depthLadderImage(probeMoments(makeLibrary(a), relativeDepthLadder()));
+        if (!a.stage && scene.shadow.satPerPixel && scene.shadow.filter == FilterKind::Sat)
+            result.images[kSatKernelImage] =
+                satKernelLadder(makeLibrary(a), scene, result.images.at("moments_raw"));
         if (!a.stage) {
             // What the msm stage is compared with: the same lighting-only render, from these
             // filtered moments, saved as "msm_<image>".

@@ -2,6 +2,7 @@
 #include "score_render.h"
 
 #include "depth_ladder.h"
+#include "sat_kernel_ladder.h"
 #include "image_io.h"
 #include "metrics.h"
 #include "raw_image.h"
@@ -40,9 +41,12 @@ std::string worstTexelText(const std::string& image, const Comparison& c) {
 
 // The stage's comparison under the rubric's tolerances: moments and filtered moments per
 // channel (the SAT with an allowance for its table's rounding), msm's G and final's colour.
-Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Image& mine, const Image& ref) {
+Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Image& mine,
+                        const Image& ref, const std::string& image) {
     const CompareBy by = job.stage.compareBy;
     if (by == CompareBy::Shadow) return compareImages(mine, ref, rubric.shadowTol);
+    if (image == kSatKernelImage)  // box widths in texels: relative (sat_kernel_ladder.h)
+        return compareMoments(mine, ref, kSatKernelAbs, kSatKernelRel);
     if (by == CompareBy::Colour) return compareImages(mine, ref, rubric.finalTol);
     std::vector<double> extra;
     if (job.stage.stage == Stage::Sat && rubric.satRounding > 0) {
@@ -155,7 +159,8 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
     const std::string prefix = job.stage.image;
     std::vector<std::string> images;
     for (const auto& name : worker->images)
-        if (name.rfind(prefix, 0) == 0 && (prefix != "moments_filtered" || name == prefix))
+        if (name.rfind(prefix, 0) == 0 &&
+            (prefix != "moments_filtered" || name == prefix || name == kSatKernelImage))
             images.push_back(name);
     if (images.empty()) images.push_back(prefix);
     double fraction = 1.0, worstCap = 1.0;
@@ -186,7 +191,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
                      "the stub value -1)\n";
             continue;
         }
-        Comparison c = compareStage(job, rubric, mine, ref);
+        Comparison c = compareStage(job, rubric, mine, ref, name);
         fraction = std::min(fraction, c.error.empty() ? c.fraction : 0.0);
         if (auto cap = rubric.worstTexelCap.find(job.stage.name);
             cap != rubric.worstTexelCap.end() && c.worst > rubric.worstTexelFactor)

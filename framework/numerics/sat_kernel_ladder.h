@@ -1,0 +1,30 @@
+// sat_kernel_ladder: what the grader's sat stage checks of satKernelTexels on a per-pixel
+// scene. The shadow a kernel makes is no measure of it: 4MSM turns the last digits of a
+// correct table into G up to 1 apart (two correct SAT pairs differ by more than 0.02 on 2 % of
+// contact's pixels), so the stage compares the kernels themselves. Over a grid of the first
+// shadowing light's map, two receivers per cell: the lit surface the map holds there (its
+// depth less the scene's bias), and a receiver at the far end of the depth range, behind every
+// caster; each with the search box, light size and limits the lighting pass would hand it.
+#pragma once
+
+#include "image.h"
+#include "scene.h"
+#include "shader_source.h"
+
+namespace sl {
+
+// The image name (one texel per grid cell; R: the lit surface's kernel, G: the far receiver's,
+// both in texels).
+inline constexpr const char* kSatKernelImage = "moments_filtered_kernel";
+
+// A kernel passes within kSatKernelAbs + kSatKernelRel · the reference's width (texels): twice
+// the widest spread of the correct variants (the catalogue's sat_kernel_* alternatives on the
+// earlier reference's table: 0.062 texels on scenes/penumbra.json, Mesa 22.3.6), where the
+// mutants move boxes by 37 to 56 texels.
+inline constexpr double kSatKernelAbs = 0.125, kSatKernelRel = 0.01;
+
+// satKernelTexels of `library` over `rawMoments` (the light's moment map, as the shadow pass
+// stores it) for the scene's first shadowing light, on a grid of at most 128 × 128 cells.
+Image satKernelLadder(const ShaderLibrary& library, const Scene& scene, const Image& rawMoments);
+
+}  // namespace sl
