@@ -24,6 +24,8 @@ TEST(ImageName, PartsRoundTrip) {
     EXPECT_FALSE(isImage("msm_shadow", ImageKind::Shadow));  // the grader's, not the render's
     EXPECT_TRUE(isImage("final_overhead", ImageKind::Final));
     EXPECT_EQ(ImageName::parse("moments_raw_depth_ladder")->kind, ImageKind::DepthLadder);
+    EXPECT_EQ(ImageName::parse("moments_filtered_kernel")->kind, ImageKind::SatKernel);
+    EXPECT_TRUE(ImageName::parse("moments_filtered_kernel")->moments());
     EXPECT_EQ(ImageName::parse("sat_layer1")->kind, ImageKind::Sat);
     for (const char* bad : {"moments_rawx", "final_", "moments_raw_light", "depth", "sat_light1x", ""})
         EXPECT_FALSE(ImageName::parse(bad)) << bad;

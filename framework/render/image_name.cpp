@@ -6,7 +6,7 @@
 namespace sl {
 namespace {
 
-constexpr ImageKind kKinds[] = {ImageKind::DepthLadder, ImageKind::MomentsRaw,
+constexpr ImageKind kKinds[] = {ImageKind::DepthLadder, ImageKind::SatKernel, ImageKind::MomentsRaw,
                                 ImageKind::MomentsFiltered, ImageKind::SecondDepth,
                                 ImageKind::Sat, ImageKind::Final, ImageKind::Shadow};
 
@@ -37,6 +37,7 @@ const char* toString(ImageKind k) {
         case ImageKind::Sat: return "sat";
         case ImageKind::SecondDepth: return "second_depth";
         case ImageKind::DepthLadder: return "moments_raw_depth_ladder";
+        case ImageKind::SatKernel: return "moments_filtered_kernel";
     }
     return "?";
 }
@@ -44,7 +45,7 @@ const char* toString(ImageKind k) {
 std::string ImageName::str() const {
     std::string s = (msmIsolated ? "msm_" : "") + std::string(toString(kind));
     if (cameraImage(kind)) return camera.empty() ? s : s + "_" + camera;
-    if (kind == ImageKind::DepthLadder) return s;
+    if (kind == ImageKind::DepthLadder || kind == ImageKind::SatKernel) return s;
     if (light >= 0) s += "_light" + std::to_string(light);
     if (cascade > 0) s += "_cascade" + std::to_string(cascade);
     if (layer > 0) s += "_layer" + std::to_string(layer);
@@ -68,7 +69,8 @@ std::optional<ImageName> ImageName::parse(std::string_view name) {
             n.camera = std::string(rest.substr(1));
             return n;
         }
-        if (k == ImageKind::DepthLadder) return rest.empty() ? std::optional(n) : std::nullopt;
+        if (k == ImageKind::DepthLadder || k == ImageKind::SatKernel)
+            return rest.empty() ? std::optional(n) : std::nullopt;
         suffix(rest, "light", n.light);
         suffix(rest, "cascade", n.cascade);
         suffix(rest, "layer", n.layer);

@@ -3,7 +3,8 @@
 // <name>.raw): "final", "shadow" and a further camera's "final_<camera>"; a light's maps
 // "moments_raw", "moments_filtered", "sat", "second_depth", with "_light<i>" for a light other
 // than the first shadowing one, "_cascade<c>" and "_layer<k>"; the grader's "msm_<image>" (the
-// msm stage's lighting-only render) and the depth ladder "moments_raw_depth_ladder". Names are
+// msm stage's lighting-only render), the depth ladder "moments_raw_depth_ladder" and the
+// per-pixel SAT box ladder "moments_filtered_kernel". Names are
 // built by str() and read by parse(), never by string prefixes.
 #pragma once
 
@@ -13,7 +14,9 @@
 
 namespace sl {
 
-enum class ImageKind { Final, Shadow, MomentsRaw, MomentsFiltered, Sat, SecondDepth, DepthLadder };
+enum class ImageKind {
+    Final, Shadow, MomentsRaw, MomentsFiltered, Sat, SecondDepth, DepthLadder, SatKernel
+};
 
 struct ImageName {
     ImageKind kind = ImageKind::Final;
@@ -32,12 +35,12 @@ struct ImageName {
     // A light's moment map or the depth ladder: stored at full float precision.
     bool moments() const {
         return kind == ImageKind::MomentsRaw || kind == ImageKind::MomentsFiltered ||
-               kind == ImageKind::DepthLadder;
+               kind == ImageKind::DepthLadder || kind == ImageKind::SatKernel;
     }
 };
 
 // "final", "shadow", "moments_raw", "moments_filtered", "sat", "second_depth",
-// "moments_raw_depth_ladder".
+// "moments_raw_depth_ladder", "moments_filtered_kernel".
 const char* toString(ImageKind);
 
 // Whether `name` parses as a render's own image of kind `kind` (an msm_ image is not).
