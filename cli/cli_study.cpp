@@ -57,7 +57,7 @@ int runTruth(const std::string& scenePath, const std::string& outDir, int sample
     // (b1 = z; other techniques store warped or quantised values), as the study's.
     const int light = truth.ray.light;
     Scene depthScene = scene;
-    overrideTechnique(depthScene.shadow, Technique::Msm4);
+    overrideTechnique(depthScene.shadow, techniqueFromName("msm4"));
     depthScene.shadow.filter = FilterKind::None;
     const PassPlan depthPlan = planPasses(depthScene);
     const RenderResult depthRender = renderer.render(depthScene, depthPlan);

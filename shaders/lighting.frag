@@ -1,7 +1,7 @@
 // lighting.frag: shades the camera's view. Each light adds (1 - G)·(diffuse + specular) to
-// the ambient term, where G is the shadow intensity of the technique compiled in
-// (SL_TECHNIQUE_<X>, a row of framework/render/technique.cpp): shaders/techniques/<x>.glsl
-// defines shadowIntensity<X>(ShadowQuery). Every technique is a permutation of this one file,
+// the ambient term, where G is the shadow intensity of the technique compiled in: its row's
+// file (SL_TECHNIQUE_FILE, a row of framework/scene/technique_table.cpp) defines
+// shadowIntensity<X>(ShadowQuery). Every technique is a permutation of this one file,
 // and every one runs on the solution's stage files: relativeDepth (moments.glsl), the SAT's
 // satBoxAverage (sat_lookup.glsl, SL_FILTER_SAT) and, where it reconstructs with Hamburger 4MSM,
 // momentShadowIntensity (msm.glsl, SL_STAGE_MSM).
@@ -14,48 +14,10 @@ uniform float uMomentBias;  // α, handed to msm.glsl
 #include "msm.glsl"
 #endif
 #include "techniques/common.glsl"
-// Helpers shared by several techniques come first: a file is included once per program,
-// even inside a branch the preprocessor drops, so a nested include would come too late.
+// The exponential warp that evsm2 and evsm4 share.
 #include "techniques/evsm_common.glsl"
-#if defined(SL_TECHNIQUE_MSM4_HAUSDORFF) || defined(SL_TECHNIQUE_MSM_SOFT)
-#include "techniques/msm_hamburger.glsl"  // instructor kit only (it solves the msm stage)
-#endif
-#ifdef SL_TECHNIQUE_MSM4
-#include "techniques/msm4.glsl"
-#endif
-#ifdef SL_TECHNIQUE_HARD
-#include "techniques/hard.glsl"
-#endif
-#ifdef SL_TECHNIQUE_SECOND_DEPTH
-#include "techniques/second_depth.glsl"
-#endif
-#ifdef SL_TECHNIQUE_PCF
-#include "techniques/pcf.glsl"
-#endif
-#ifdef SL_TECHNIQUE_PCSS
-#include "techniques/pcss.glsl"
-#endif
-#ifdef SL_TECHNIQUE_VSM
-#include "techniques/vsm.glsl"
-#endif
-#ifdef SL_TECHNIQUE_EVSM2
-#include "techniques/evsm2.glsl"
-#endif
-#ifdef SL_TECHNIQUE_EVSM4
-#include "techniques/evsm4.glsl"
-#endif
-#ifdef SL_TECHNIQUE_CSM
-#include "techniques/csm.glsl"
-#endif
-#ifdef SL_TECHNIQUE_MSM4_HAUSDORFF
-#include "techniques/msm4_hausdorff.glsl"
-#endif
-#ifdef SL_TECHNIQUE_MSM4_16BIT
-#include "techniques/msm4_16bit.glsl"
-#endif
-#ifdef SL_TECHNIQUE_MSM_SOFT
-#include "techniques/msm_soft.glsl"
-#endif
+// The row's GLSL file (framework/scene/technique_table.cpp): it defines SL_SHADOW_INTENSITY.
+#include SL_TECHNIQUE_FILE
 
 // SL_MAX_LIGHTS, SL_MAX_CASCADES (per light) come as defines (framework/scene/scene_limits.h); a
 // light's maps are "slots" SL_MAX_CASCADES·i + c.

@@ -102,7 +102,7 @@ TEST(CascadePlan, NCascadesPlanNSetsOfMapsWithContiguousRanges) {
     Scene s = loadScene(largeDirectional().string());
     s.lights[0].cascades = 1;
     s.shadow.mapSize = 512;
-    overrideTechnique(s.shadow, Technique::Vsm);
+    overrideTechnique(s.shadow, techniqueFromName("vsm"));
     s.shadow.filter = FilterKind::Gaussian;
     const PassPlan one = planPasses(s);
     EXPECT_TRUE(one.cascades.empty());
@@ -146,7 +146,7 @@ TEST(CascadeRender, CascadesBringTheShadowNearTheCameraCloserToTheTruth) {
     s.cameras[0].width = 320;
     s.cameras[0].height = 180;
     s.shadow.mapSize = 512;
-    overrideTechnique(s.shadow, Technique::Hard);
+    overrideTechnique(s.shadow, techniqueFromName("hard"));
     s.lights[0].cascades = 1;
     test::sharedContext();
     SceneTruthOptions options;  // no cache: the test's scene is not a file
@@ -182,7 +182,7 @@ TEST(CascadeRender, RawMapsOfEveryCascadeFeedBackBitIdentically) {
     s.cameras[0].width = 160;
     s.cameras[0].height = 90;
     s.shadow.mapSize = 256;
-    overrideTechnique(s.shadow, Technique::Vsm);
+    overrideTechnique(s.shadow, techniqueFromName("vsm"));
     s.shadow.filter = FilterKind::Gaussian;
     s.lights[0].cascades = 3;
     test::sharedContext();

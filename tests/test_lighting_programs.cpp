@@ -37,7 +37,7 @@ TEST(LightingPrograms, WarmUpCompilesTheStudentStagesPrograms) {
 }
 
 TEST(LightingPrograms, WarmUpCompilesTheFrameworkGaussianForTheScenesRadius) {
-    for (Technique t : {Technique::Vsm, Technique::Csm}) {
+    for (Technique t : {techniqueFromName("vsm"), techniqueFromName("csm")}) {
         Scene s = warmUpScene("classic");
         overrideTechnique(s.shadow, t);
         ASSERT_EQ(s.shadow.filter, FilterKind::Gaussian);

@@ -99,11 +99,11 @@ TEST(PassPlan, AFilterThatChangesNothingIsLeftOut) {
 
     // VSM keeps two channels when nothing filters its map.
     s.shadow.gaussianRadius = 0;
-    s.shadow.technique = Technique::Vsm;
+    s.shadow.technique = techniqueFromName("vsm");
     EXPECT_EQ(planPasses(s).texture(0, TextureRole::Raw)->format, "RG32F");
     // A SAT box of one texel keeps its table: the bilinear read that would stand in for it
     // is weighed with 8 bits on llvmpipe, not the same image.
-    s.shadow.technique = Technique::Msm4;
+    s.shadow.technique = techniqueFromName("msm4");
     s.shadow.filter = FilterKind::Sat;
     s.shadow.satKernelTexels = 1.0f;
     EXPECT_EQ(planPasses(s).passes.size(), 4u);
@@ -113,9 +113,9 @@ TEST(PassPlan, KernelReachesTheImageUnlessThePixelPicksIt) {
     ShadowEffect fx;
     fx.filter = FilterKind::Sat;
     EXPECT_TRUE(kernelReachesImage(fx));  // msm4
-    fx.technique = Technique::MsmSoft;
+    fx.technique = techniqueFromName("msm-soft");
     EXPECT_FALSE(kernelReachesImage(fx));
-    fx.technique = Technique::Pcf;  // its PCF kernel
+    fx.technique = techniqueFromName("pcf");  // its PCF kernel
     EXPECT_TRUE(kernelReachesImage(fx));
     fx.filter = FilterKind::None;
     EXPECT_FALSE(kernelReachesImage(fx));
@@ -169,47 +169,47 @@ struct Expected {
 
 using K = PassKind;
 const std::vector<Expected> kLadder = {
-    {Technique::Hard, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 4 + 4, 1},
-    {Technique::SecondDepth, FilterKind::None, {K::Shadow, K::ShadowSecond, K::Lighting}, "R32F", 1,
+    {techniqueFromName("hard"), FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 4 + 4, 1},
+    {techniqueFromName("second-depth"), FilterKind::None, {K::Shadow, K::ShadowSecond, K::Lighting}, "R32F", 1,
      4, 4 + 4 + 4, 1},
-    {Technique::Pcf, FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
-    {Technique::Pcf, FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
-    {Technique::Pcss, FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
+    {techniqueFromName("pcf"), FilterKind::Gaussian, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
+    {techniqueFromName("pcf"), FilterKind::Sat, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
+    {techniqueFromName("pcss"), FilterKind::None, {K::Shadow, K::Lighting}, "R32F", 1, 4, 8, 1},
     // Gaussian: raw + scratch + filtered; SAT: raw + scratch + table (both twice the map's
     // width: two texels per entry), and the resolve's filtered map (output only, asked for
     // here: PlanOptions::resolveSat). A map a filter stage reads is
     // RGBA32F (the stage contract's format), so VSM's two channels fill half of each texel.
-    {Technique::Vsm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+    {techniqueFromName("vsm"), FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 3 * 16, 2},
-    {Technique::Vsm, FilterKind::Sat,
+    {techniqueFromName("vsm"), FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
      4 + 2 * 16 + 2 * 32, 2},
-    {Technique::Vsm, FilterKind::None, {K::Shadow, K::Lighting}, "RG32F", 1, 8, 4 + 8, 2},
-    {Technique::Evsm2, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+    {techniqueFromName("vsm"), FilterKind::None, {K::Shadow, K::Lighting}, "RG32F", 1, 8, 4 + 8, 2},
+    {techniqueFromName("evsm2"), FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 48, 2},
-    {Technique::Evsm4, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+    {techniqueFromName("evsm4"), FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 48, 4},
     // CSM, M = 8 terms (the default): 16 channels in four RGBA32F maps, each filtered.
-    {Technique::Csm, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+    {techniqueFromName("csm"), FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 4, 16, 4 + 3 * 64, 16},
     // msm4 = the student stages: SAT rows, columns, and the resolve for output. The table and
     // the row pass's scratch have two RGBA32F texels per map texel.
-    {Technique::Msm4, FilterKind::Sat,
+    {techniqueFromName("msm4"), FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
      4 + 2 * 16 + 2 * 32, 4},
-    {Technique::Msm4, FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
+    {techniqueFromName("msm4"), FilterKind::Gaussian, {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting},
      "RGBA32F", 1, 16, 4 + 48, 4},
-    {Technique::Msm4Hausdorff, FilterKind::Gaussian,
+    {techniqueFromName("msm4-hausdorff"), FilterKind::Gaussian,
      {K::Shadow, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA32F", 1, 16, 4 + 48, 4},
     // 16 bits: half of msm4's map, widened to RGBA32F for the filter stages.
-    {Technique::Msm4_16bit, FilterKind::Gaussian,
+    {techniqueFromName("msm4-16bit"), FilterKind::Gaussian,
      {K::Shadow, K::Widen, K::GaussianX, K::GaussianY, K::Lighting}, "RGBA16", 1, 8,
      4 + 8 + 3 * 16, 4},
-    {Technique::Msm4_16bit, FilterKind::Sat,
+    {techniqueFromName("msm4-16bit"), FilterKind::Sat,
      {K::Shadow, K::Widen, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA16", 1, 8,
      4 + 8 + 2 * 16 + 2 * 32, 4},
-    {Technique::Msm4_16bit, FilterKind::None, {K::Shadow, K::Lighting}, "RGBA16", 1, 8, 4 + 8, 4},
-    {Technique::MsmSoft, FilterKind::Sat,
+    {techniqueFromName("msm4-16bit"), FilterKind::None, {K::Shadow, K::Lighting}, "RGBA16", 1, 8, 4 + 8, 4},
+    {techniqueFromName("msm-soft"), FilterKind::Sat,
      {K::Shadow, K::SatRows, K::SatColumns, K::SatResolve, K::Lighting}, "RGBA32F", 1, 16,
      4 + 2 * 16 + 2 * 32, 4},
 };
@@ -236,15 +236,15 @@ TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
 
 TEST(PassPlan, Msm16bitHalvesTheMapOfMsm4) {
     Scene s = sceneWith(FilterKind::Gaussian, 1, true);
-    s.shadow.technique = Technique::Msm4;
+    s.shadow.technique = techniqueFromName("msm4");
     const size_t full = planPasses(s).texture(0, TextureRole::Raw)->bytes;
-    s.shadow.technique = Technique::Msm4_16bit;
+    s.shadow.technique = techniqueFromName("msm4-16bit");
     EXPECT_EQ(planPasses(s).texture(0, TextureRole::Raw)->bytes * 2, full);
 }
 
 TEST(PassPlan, CsmTermsDecideTheLayers) {
     Scene s = sceneWith(FilterKind::None, 1, true);
-    s.shadow.technique = Technique::Csm;
+    s.shadow.technique = techniqueFromName("csm");
     for (int m : {1, 2, 3, 8}) {
         s.shadow.parameters["terms"] = m;
         PassPlan plan = planPasses(s);
@@ -266,7 +266,7 @@ TEST(PassPlan, AnUnlitSceneAllocatesAndDispatchesNothingForEveryTechnique) {
 
 TEST(PassPlan, ExplainNamesFormatMemoryAndParameters) {
     Scene s = sceneWith(FilterKind::Gaussian, 1, true);
-    s.shadow.technique = Technique::Vsm;
+    s.shadow.technique = techniqueFromName("vsm");
     s.shadow.mapSize = 512;
     std::string text = explainPlan(s, planPasses(s));
     EXPECT_NE(text.find("technique vsm"), std::string::npos) << text;

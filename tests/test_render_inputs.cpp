@@ -50,11 +50,11 @@ RenderResult render(const Scene& s, const RenderInputs& inputs) {
 
 TEST(RenderInputs, RawMapFedBackRendersBitIdentically) {
     const std::vector<Case> cases = {
-        {Technique::Hard, FilterKind::None},        {Technique::SecondDepth, FilterKind::None},
-        {Technique::Pcf, FilterKind::Gaussian},     {Technique::Vsm, FilterKind::Gaussian},
-        {Technique::Vsm, FilterKind::Sat},          {Technique::Msm4, FilterKind::Gaussian},
-        {Technique::Msm4, FilterKind::Sat},         {Technique::Msm4Hausdorff, FilterKind::Sat},
-        {Technique::Msm4_16bit, FilterKind::Gaussian}, {Technique::Csm, FilterKind::Gaussian},
+        {techniqueFromName("hard"), FilterKind::None},        {techniqueFromName("second-depth"), FilterKind::None},
+        {techniqueFromName("pcf"), FilterKind::Gaussian},     {techniqueFromName("vsm"), FilterKind::Gaussian},
+        {techniqueFromName("vsm"), FilterKind::Sat},          {techniqueFromName("msm4"), FilterKind::Gaussian},
+        {techniqueFromName("msm4"), FilterKind::Sat},         {techniqueFromName("msm4-hausdorff"), FilterKind::Sat},
+        {techniqueFromName("msm4-16bit"), FilterKind::Gaussian}, {techniqueFromName("csm"), FilterKind::Gaussian},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(name(c));
@@ -65,8 +65,8 @@ TEST(RenderInputs, RawMapFedBackRendersBitIdentically) {
         ASSERT_EQ(first.rawMaps.size(), 1u);
         const RawShadowMap& raw = first.rawMaps.at(0);
         ASSERT_FALSE(raw.raw.empty());
-        EXPECT_EQ(raw.second.width > 0, c.technique == Technique::SecondDepth);
-        EXPECT_EQ(raw.raw.size() > 1, c.technique == Technique::Csm);  // 8 terms: 4 layers
+        EXPECT_EQ(raw.second.width > 0, c.technique == techniqueFromName("second-depth"));
+        EXPECT_EQ(raw.raw.size() > 1, c.technique == techniqueFromName("csm"));  // 8 terms: 4 layers
 
         RenderInputs shared;
         shared.rawMaps = first.rawMaps;
@@ -93,8 +93,8 @@ TEST(RenderInputs, OneRawMapServesEveryFilterOfItsFormat) {
     // same images as a VSM + SAT render that makes its own map.
     RenderInputs keep;
     keep.keepRawMaps = true;
-    const RenderResult gaussian = render(smallScene(Technique::Vsm, FilterKind::Gaussian), keep);
-    const Scene sat = smallScene(Technique::Vsm, FilterKind::Sat);
+    const RenderResult gaussian = render(smallScene(techniqueFromName("vsm"), FilterKind::Gaussian), keep);
+    const Scene sat = smallScene(techniqueFromName("vsm"), FilterKind::Sat);
     RenderInputs shared;
     shared.rawMaps = gaussian.rawMaps;
     const RenderResult fromShared = render(sat, shared);
@@ -102,8 +102,8 @@ TEST(RenderInputs, OneRawMapServesEveryFilterOfItsFormat) {
     EXPECT_TRUE(sameBytes(fromShared.images.at("shadow"), own.images.at("shadow")));
     EXPECT_TRUE(sameBytes(fromShared.images.at("final"), own.images.at("final")));
     // msm4 and msm4-hausdorff store the same RGBA32F moments: one map serves both.
-    const RenderResult msm4 = render(smallScene(Technique::Msm4, FilterKind::Gaussian), keep);
-    const Scene hausdorff = smallScene(Technique::Msm4Hausdorff, FilterKind::Gaussian);
+    const RenderResult msm4 = render(smallScene(techniqueFromName("msm4"), FilterKind::Gaussian), keep);
+    const Scene hausdorff = smallScene(techniqueFromName("msm4-hausdorff"), FilterKind::Gaussian);
     shared.rawMaps = msm4.rawMaps;
     EXPECT_TRUE(sameBytes(render(hausdorff, shared).images.at("shadow"),
                           render(hausdorff, {}).images.at("shadow")));
@@ -112,7 +112,7 @@ TEST(RenderInputs, OneRawMapServesEveryFilterOfItsFormat) {
 TEST(RenderInputs, TheGivenRawMapIsWhatLightingReads) {
     // A map with nothing in it (relative depth 1 everywhere) must light everything: were the
     // shadow pass run anyway, or the given map ignored, the box would still cast its shadow.
-    const Scene s = smallScene(Technique::Hard, FilterKind::None);
+    const Scene s = smallScene(techniqueFromName("hard"), FilterKind::None);
     RenderInputs keep;
     keep.keepRawMaps = true;
     const RenderResult normal = render(s, keep);
@@ -127,11 +127,11 @@ TEST(RenderInputs, TheGivenRawMapIsWhatLightingReads) {
 }
 
 TEST(RenderInputs, AMapOfTheWrongSizeOrFormatIsRefused) {
-    const Scene s = smallScene(Technique::Vsm, FilterKind::Gaussian);
+    const Scene s = smallScene(techniqueFromName("vsm"), FilterKind::Gaussian);
     RenderInputs keep;
     keep.keepRawMaps = true;
     RenderInputs wrong;
-    wrong.rawMaps = render(smallScene(Technique::Hard, FilterKind::None), keep).rawMaps;  // R32F
+    wrong.rawMaps = render(smallScene(techniqueFromName("hard"), FilterKind::None), keep).rawMaps;  // R32F
     EXPECT_THROW(render(s, wrong), std::invalid_argument);
     wrong.rawMaps.at(0).raw.clear();
     EXPECT_THROW(render(s, wrong), std::invalid_argument);

@@ -51,20 +51,20 @@ Scene boundsScene() {
 TEST(TechniqueBounds, VsmAndEvsmLitFractionIsAtLeastTheExactFilteredVisibility) {
     const Scene s = boundsScene();
     // Exact filtered visibility: PCF with the moment filter's Gaussian, no receiver bias.
-    const Image pcf = shadowOf(s, Technique::Pcf, {{"constantBias", 0}, {"slopeBias", 0}});
+    const Image pcf = shadowOf(s, techniqueFromName("pcf"), {{"constantBias", 0}, {"slopeBias", 0}});
     double covered = 0;
     for (float g : pcf.pixels) covered += g > 0.02f && g < 0.98f;
     ASSERT_GT(covered, 100) << "the scene must have penumbrae for the bound to mean something";
     // G_vsm <= G_pcf: the tolerance covers llvmpipe's 8-bit bilinear weights (PCF weighs exactly).
-    auto [vsm, at] = worstExcess(shadowOf(s, Technique::Vsm, {{"bleedReduction", 0}, {"minVariance", 0}}), pcf);
+    auto [vsm, at] = worstExcess(shadowOf(s, techniqueFromName("vsm"), {{"bleedReduction", 0}, {"minVariance", 0}}), pcf);
     EXPECT_LE(vsm, 0.01f) << "pixel " << at;
     auto [evsm, at4] = worstExcess(
-        shadowOf(s, Technique::Evsm4, {{"bleedReduction", 0}, {"minVariance", 0}, {"positiveExponent", 20},
+        shadowOf(s, techniqueFromName("evsm4"), {{"bleedReduction", 0}, {"minVariance", 0}, {"positiveExponent", 20},
                                        {"negativeExponent", 5}}),
         pcf);
     EXPECT_LE(evsm, 0.01f) << "pixel " << at4;
     // And light bleeding is real: somewhere VSM is much lighter than the truth.
-    auto [leak, leakAt] = worstExcess(pcf, shadowOf(s, Technique::Vsm, {{"bleedReduction", 0}}));
+    auto [leak, leakAt] = worstExcess(pcf, shadowOf(s, techniqueFromName("vsm"), {{"bleedReduction", 0}}));
     EXPECT_GT(leak, 0.2f) << "pixel " << leakAt;
 }
 
@@ -73,17 +73,17 @@ TEST(TechniqueBounds, MomentShadowIntensityIsAtMostTheExactFilteredVisibility) {
     // depth, where the biased moments (α = 3e-5 toward (½, ½, ½, ½): σ ≈ 0.003) say nothing.
     Scene s = boundsScene();
     s.shadow.depthBias = 0.004f;
-    const Image pcf = shadowOf(s, Technique::Pcf, {{"constantBias", 0}, {"slopeBias", 0}});
+    const Image pcf = shadowOf(s, techniqueFromName("pcf"), {{"constantBias", 0}, {"slopeBias", 0}});
     // Within the bias error: the moment bias can raise G by about α / (z_f − b1)², i.e. where
     // z_f is within a few σ of the mean; 0.02 is the documented allowance (docs/techniques.md);
     // a sign or root mix-up costs far more.
-    for (Technique t : {Technique::Msm4, Technique::Msm4Hausdorff}) {
+    for (Technique t : {techniqueFromName("msm4"), techniqueFromName("msm4-hausdorff")}) {
         const Image g = shadowOf(s, t);
         auto [excess, at] = worstExcess(g, pcf);
         EXPECT_LE(excess, 0.02f) << toString(t) << " pixel (" << at % g.width << ", " << at / g.width
                                  << ") from the bottom: G " << g.pixels[at] << ", exact " << pcf.pixels[at];
     }
-    auto [q, qa] = worstExcess(shadowOf(s, Technique::Msm4_16bit), pcf);
+    auto [q, qa] = worstExcess(shadowOf(s, techniqueFromName("msm4-16bit")), pcf);
     EXPECT_LE(q, 0.05f) << "msm4-16bit pixel " << qa;
 }
 

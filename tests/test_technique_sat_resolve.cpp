@@ -47,7 +47,7 @@ double boxMean(const Image& raw, int x, int y, int c, double kernel) {
 }  // namespace
 
 TEST(TechniqueSatResolve, PlanAddsTheResolveOnlyWhenAsked) {
-    const Scene s = satScene(Technique::Vsm, 7.0f);
+    const Scene s = satScene(techniqueFromName("vsm"), 7.0f);
     const PassPlan with = planPasses(s, {.resolveSat = true});
     ASSERT_NE(with.texture(0, TextureRole::Filtered), nullptr);
     EXPECT_EQ(with.texture(0, TextureRole::Filtered)->format, "RGBA32F");  // the filter stages' format
@@ -63,7 +63,7 @@ TEST(TechniqueSatResolve, FilteredMapIsTheBoxMeanOfTheRawMap) {
     // largest value sets the scale), and the result is rounded to float32. Allowed: 3e-5 of the
     // channel's largest |value| + 1e-6 relative; a box off by half a texel errs by about a
     // texel's value / kernel at every shadow edge, far more.
-    for (Technique t : {Technique::Vsm, Technique::Evsm4, Technique::Msm4Hausdorff})
+    for (Technique t : {techniqueFromName("vsm"), techniqueFromName("evsm4"), techniqueFromName("msm4-hausdorff")})
         for (float kernel : {7.0f, 4.5f}) {
             SCOPED_TRACE(techniqueRow(t).name + " kernel " + std::to_string(kernel));
             const RenderResult r = test::renderScene(satScene(t, kernel));
@@ -93,7 +93,7 @@ TEST(TechniqueSatResolve, FilteredMapIsTheBoxMeanOfTheRawMap) {
 
 TEST(TechniqueSatResolve, ResolveChangesNoLighting) {
     // The resolve is an output only: the lit image is the same with and without it.
-    const Scene s = satScene(Technique::Vsm, 7.0f);
+    const Scene s = satScene(techniqueFromName("vsm"), 7.0f);
     test::sharedContext();
     Renderer renderer(test::library("reference"));
     const Image with = renderer.render(s, planPasses(s, {.resolveSat = true})).images.at("shadow");

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <string>
 
 namespace sl {
@@ -33,14 +34,21 @@ std::string errorOf(const std::string& shadow) {
 
 TEST(TechniqueTable, EveryRowIsNamedAndFindable) {
     const auto names = techniqueNames();
-    ASSERT_EQ(names.size(), 12u);
+    ASSERT_GE(names.size(), 13u);  // the twelve of the ladder and esm
     for (const auto& name : names) EXPECT_EQ(toString(techniqueFromName(name)), name);
+    // Each row's define, file and name are its own (a copied row that kept one would clash).
+    std::set<std::string> defines, files;
+    for (const auto& row : techniqueTable()) {
+        EXPECT_TRUE(defines.insert(techniqueDefine(row)).second) << row.name;
+        EXPECT_TRUE(files.insert(row.file).second) << row.name;
+        EXPECT_TRUE(fs::exists(test::root() / "shaders" / row.file)) << row.file;
+    }
     // The rows that reconstruct with Hamburger 4MSM do it through the solution's msm.glsl; the
     // two whose own files solve the msm stage say so (the student kit leaves them out).
     for (const auto& row : techniqueTable()) {
-        const bool msm = row.storeDefine.rfind("SL_STORE_MOMENTS4", 0) == 0;
+        const bool msm = row.store == StoreKind::Moments4 || row.store == StoreKind::Moments4_16bit;
         EXPECT_EQ(row.msmStage, msm) << row.name;
-        const bool leftOut = row.id == Technique::Msm4Hausdorff || row.id == Technique::MsmSoft;
+        const bool leftOut = row.id == techniqueFromName("msm4-hausdorff") || row.id == techniqueFromName("msm-soft");
         EXPECT_EQ(!row.solvesStage.empty(), leftOut) << row.name;
     }
 }
@@ -48,7 +56,7 @@ TEST(TechniqueTable, EveryRowIsNamedAndFindable) {
 TEST(TechniqueTable, SceneNamesTechniqueAndParameters) {
     Scene s = parseScene(sceneWithShadow(R"({"technique": "vsm", "parameters": {"bleedReduction": 0.3}})"),
                          "t.json");
-    EXPECT_EQ(s.shadow.technique, Technique::Vsm);
+    EXPECT_EQ(s.shadow.technique, techniqueFromName("vsm"));
     EXPECT_DOUBLE_EQ(techniqueParameter(s.shadow, "bleedReduction"), 0.3);
     EXPECT_DOUBLE_EQ(techniqueParameter(s.shadow, "minVariance"), 1e-5);  // the row's default
 }
@@ -85,27 +93,27 @@ TEST(TechniqueTable, BadTechniqueInputGivesClearErrors) {
 TEST(TechniqueTable, OverrideKeepsAnAllowedFilterAndReplacesOthers) {
     ShadowEffect fx;
     fx.filter = FilterKind::Sat;
-    overrideTechnique(fx, Technique::Vsm, {{"bleedReduction", 0.0}});
+    overrideTechnique(fx, techniqueFromName("vsm"), {{"bleedReduction", 0.0}});
     EXPECT_EQ(fx.filter, FilterKind::Sat);
     EXPECT_DOUBLE_EQ(techniqueParameter(fx, "bleedReduction"), 0.0);
-    overrideTechnique(fx, Technique::Hard);
+    overrideTechnique(fx, techniqueFromName("hard"));
     EXPECT_EQ(fx.filter, FilterKind::None);
     EXPECT_DOUBLE_EQ(techniqueParameter(fx, "constantBias"), 5e-4);  // parameters reset
     fx.filter = FilterKind::Gaussian;
-    overrideTechnique(fx, Technique::MsmSoft);
+    overrideTechnique(fx, techniqueFromName("msm-soft"));
     EXPECT_EQ(fx.filter, FilterKind::Sat);
     // The same technique keeps its parameters and takes the given ones on top.
-    overrideTechnique(fx, Technique::Vsm, {{"bleedReduction", 0.0}});
-    overrideTechnique(fx, Technique::Vsm, {{"minVariance", 1e-3}});
+    overrideTechnique(fx, techniqueFromName("vsm"), {{"bleedReduction", 0.0}});
+    overrideTechnique(fx, techniqueFromName("vsm"), {{"minVariance", 1e-3}});
     EXPECT_DOUBLE_EQ(techniqueParameter(fx, "bleedReduction"), 0.0);
     EXPECT_DOUBLE_EQ(techniqueParameter(fx, "minVariance"), 1e-3);
-    EXPECT_THROW(overrideTechnique(fx, Technique::Vsm, {{"nope", 1}}), std::invalid_argument);
-    EXPECT_THROW(overrideTechnique(fx, Technique::Vsm, {{"minVariance", -1}}), std::invalid_argument);
+    EXPECT_THROW(overrideTechnique(fx, techniqueFromName("vsm"), {{"nope", 1}}), std::invalid_argument);
+    EXPECT_THROW(overrideTechnique(fx, techniqueFromName("vsm"), {{"minVariance", -1}}), std::invalid_argument);
 }
 
 TEST(TechniqueTable, SpecParsing) {
     auto [t, p] = parseTechniqueSpec("evsm4:positiveExponent=30:negativeExponent=8");
-    EXPECT_EQ(t, Technique::Evsm4);
+    EXPECT_EQ(t, techniqueFromName("evsm4"));
     ASSERT_EQ(p.size(), 2u);
     EXPECT_EQ(p[0].first, "positiveExponent");
     EXPECT_DOUBLE_EQ(p[1].second, 8.0);
@@ -130,14 +138,14 @@ TEST(TechniqueTable, QuantisedMomentsInvertAndFitUnorm16) {
 
 TEST(TechniqueTable, ClearValuesAreTheStoreOfDepthOne) {
     ShadowEffect fx;
-    fx.technique = Technique::Evsm4;
+    fx.technique = techniqueFromName("evsm4");
     fx.parameters = {{"positiveExponent", 80.0}, {"negativeExponent", 5.0}};
     const auto c = shadowClearValues(fx);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_FLOAT_EQ(c[0].x, float(std::exp(42.0)));  // clamped: e^{2c} must stay finite
     EXPECT_TRUE(std::isfinite(c[0].y));
     EXPECT_FLOAT_EQ(c[0].z, float(-std::exp(-5.0)));
-    fx.technique = Technique::Csm;
+    fx.technique = techniqueFromName("csm");
     fx.parameters = {{"terms", 3.0}};
     const auto csm = shadowClearValues(fx);
     ASSERT_EQ(csm.size(), 2u);
@@ -156,11 +164,54 @@ namespace sl {
 TEST(TechniqueTable, ARowIsInTheKitWhenItsLightingFileIs) {
     const fs::path shaders = test::tempDir("technique_in_kit") / "shaders";
     fs::create_directories(shaders / "techniques");
-    const TechniqueRow& soft = techniqueRow(Technique::MsmSoft);
+    const TechniqueRow& soft = techniqueRow(techniqueFromName("msm-soft"));
     EXPECT_FALSE(techniqueInKit(soft, shaders.string()));
-    test::writeFile(shaders / soft.lightingFile, "// present\n");
+    test::writeFile(shaders / soft.file, "// present\n");
     EXPECT_TRUE(techniqueInKit(soft, shaders.string()));
-    EXPECT_FALSE(techniqueInKit(techniqueRow(Technique::Msm4), shaders.string()));
+    EXPECT_FALSE(techniqueInKit(techniqueRow(techniqueFromName("msm4")), shaders.string()));
+}
+
+}  // namespace sl
+
+namespace sl {
+
+// The lighting program of a row includes that row's file and no other row's (the file is the
+// row's, handed over as SL_TECHNIQUE_FILE); a row that stores through its own file has it in
+// the shadow pass's program too.
+TEST(TechniqueTable, EachRowsProgramsIncludeItsFileAndNoOtherRows) {
+    const ShaderLibrary lib = test::library("reference");
+    auto includes = [](const AssembledShader& a, const TechniqueRow& row) {
+        return std::any_of(a.fileNames.begin(), a.fileNames.end(),
+                           [&](const std::string& f) { return f == "shaders/" + row.file; });
+    };
+    for (const TechniqueRow& row : techniqueTable()) {
+        if (!row.solvesStage.empty()) continue;  // their files need the msm stage's solution
+        ShadowEffect fx;
+        overrideTechnique(fx, row.id);
+        const std::vector<std::string> defines = techniqueDefines(fx);
+        const AssembledShader lighting = lib.assemble("lighting.frag", defines);
+        for (const TechniqueRow& other : techniqueTable())
+            EXPECT_EQ(includes(lighting, other), other.id == row.id) << row.name << " " << other.name;
+        if (row.store == StoreKind::File)
+            EXPECT_TRUE(includes(lib.assemble("techniques/store.frag", defines), row)) << row.name;
+    }
+}
+
+// `#include NAME` takes its file from a framework define only; any other name is refused.
+TEST(TechniqueTable, AnIncludeByNameNeedsTheFrameworksDefine) {
+    const fs::path dir = test::tempDir("include_by_name");
+    test::writeFile(dir / "a.glsl", "#include SL_SOME_FILE\nfloat a;\n");
+    test::writeFile(dir / "b.glsl", "float b;\n");
+    ShaderLibrary lib({}, {dir}, dir);
+    const AssembledShader ok = lib.assemble("a.glsl", {"SL_SOME_FILE=b.glsl"});
+    EXPECT_NE(ok.text.find("float b;"), std::string::npos);
+    try {
+        lib.assemble("a.glsl", {});
+        ADD_FAILURE() << "an undefined name was included";
+    } catch (const ShaderError& e) {
+        EXPECT_NE(std::string(e.what()).find("a.glsl:1"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("a name the framework defines"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace sl

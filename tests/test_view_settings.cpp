@@ -44,12 +44,12 @@ TEST(ViewSettings, SwitchingTheFilterTypeKeepsEachTypesParameters) {
 TEST(ViewSettings, SwitchingTheTechniqueKeepsEachTechniquesFilterAndParameters) {
     EditableScene s = classic();  // msm4, gaussian radius 4
     s.set("shadow.technique", std::string("vsm"));  // vsm takes a Gaussian: the filter stays
-    EXPECT_EQ(s.scene().shadow.technique, Technique::Vsm);
+    EXPECT_EQ(s.scene().shadow.technique, techniqueFromName("vsm"));
     EXPECT_EQ(s.scene().shadow.filter, FilterKind::Gaussian);
     EXPECT_EQ(s.scene().shadow.gaussianRadius, 4);
     s.set("shadow.parameters.bleedReduction", std::string("0.3"));
     s.set("shadow.technique", std::string("hard"));  // filter none only: the row's default
-    EXPECT_EQ(s.scene().shadow.technique, Technique::Hard);
+    EXPECT_EQ(s.scene().shadow.technique, techniqueFromName("hard"));
     EXPECT_EQ(s.scene().shadow.filter, FilterKind::None);
     EXPECT_TRUE(s.scene().shadow.parameters.empty());  // vsm's parameter is not hard's
     s.set("shadow.parameters.slopeBias", std::string("2.5"));
@@ -68,7 +68,7 @@ TEST(ViewSettings, SwitchingTheTechniqueKeepsEachTechniquesFilterAndParameters) 
         EXPECT_NE(std::string(e.what()).find("/shadow/technique: expected one of"), std::string::npos)
             << e.what();
     }
-    EXPECT_EQ(s.scene().shadow.technique, Technique::Hard);
+    EXPECT_EQ(s.scene().shadow.technique, techniqueFromName("hard"));
 }
 
 TEST(ViewSettings, ABadValueNamesFileKeyAndExpectationAndChangesNothing) {

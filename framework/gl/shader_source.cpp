@@ -19,6 +19,7 @@ const std::vector<std::string>& stageFileNames() {
 struct ShaderLibrary::Assembly {
     AssembledShader out;
     glsl::Conditionals conditions;
+    std::map<std::string, std::string> defines;  // the framework's, NAME -> value
     std::vector<fs::path> stack;  // the files being expanded, outermost first
     void emit(std::string_view line, int file, int lineNo) {
         out.text.append(line);
@@ -102,10 +103,11 @@ fs::path ShaderLibrary::resolve(const std::string& fileName, const fs::path& inc
 
 AssembledShader ShaderLibrary::assemble(const std::string& fileName,
                                         const std::vector<std::string>& defines) const {
-    Assembly a{{}, glsl::Conditionals(defines), {}};
+    Assembly a{{}, glsl::Conditionals(defines), {}, {}};
     a.emit("#version 450 core", -1, 0);
     for (const auto& d : defines) {
         auto eq = d.find('=');
+        if (eq != std::string::npos) a.defines[d.substr(0, eq)] = d.substr(eq + 1);
         a.emit("#define " + (eq == std::string::npos ? d : d.substr(0, eq) + " " + d.substr(eq + 1)),
                -1, 0);
     }
@@ -162,8 +164,15 @@ void ShaderLibrary::append(const fs::path& file, Assembly& a, int depth) const {
             a.emit("", id, lineNo);  // the include line itself becomes blank
             if (!compiled) continue;  // a branch this permutation does not compile
             auto name = glsl::includeName(d->argument);
+            // `#include NAME`: the file the framework's define NAME names (the technique's
+            // file, SL_TECHNIQUE_FILE); a file's own #define cannot name one.
+            if (!name) {
+                const std::string macro(d->argument);  // trimmed, comments removed
+                if (auto it = a.defines.find(macro); it != a.defines.end()) name = it->second;
+            }
             if (!name || name->empty())
-                fail("#include takes a file name in double quotes: #include \"file.glsl\"");
+                fail("#include takes a file name in double quotes (#include \"file.glsl\") or "
+                     "a name the framework defines as one");
             fs::path target;
             try {
                 target = resolve(*name, file);

@@ -11,6 +11,8 @@
 // so they point at the student's own file and line. `#line` and `#extension` in a file are
 // errors: one would spoof where errors are reported, the other cannot follow other code.
 //
+// `#include NAME` includes the file a framework define names (SL_TECHNIQUE_FILE=techniques/x.glsl,
+// the technique's row); a name a file #defines itself is refused.
 // #include lines inside #if/#ifdef branches the program's defines turn off are not expanded
 // (glsl_scan.h evaluates the conditions), so a file a permutation does not use is not read.
 // The text is scanned by hand, never with std::regex (a long line would overflow the stack).

@@ -212,11 +212,7 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
         !options.resolveSat)
         plan.leftOut.push_back("sat-resolve: the moments_filtered image is not asked for "
                                "(lighting reads the table; render --filtered-moments makes it)");
-    if (!plan.shadowLights.empty()) {
-        plan.momentChannels = map.channels * map.layers;
-        if (fx.technique == Technique::Csm)
-            plan.momentChannels = 2 * int(techniqueParameter(fx, "terms"));
-    }
+    if (!plan.shadowLights.empty()) plan.momentChannels = map.usedChannels;
     plan.defines = techniqueDefines(fx);
     for (int c = 0; c < int(scene.cameras.size()); ++c) {
         const Camera& cam = scene.cameras[c];

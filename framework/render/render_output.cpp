@@ -1,5 +1,6 @@
 // render_output: files and sidecar of one render (see render_output.h).
 #include "render_output.h"
+#include "image_name.h"
 
 #include "image_io.h"
 #include "technique.h"
@@ -21,9 +22,8 @@ nlohmann::json writeRenderOutputs(const Scene& scene, const PassPlan& plan,
     for (const auto& [name, image] : result.images) {
         writeExr(image, outDir / (name + ".exr"), SampleType::Float, Compression::Fast);
         record(name + ".exr");
-        const bool isSat = name.rfind("sat", 0) == 0;  // sums, not viewable values
-        if (isSat) continue;
-        writePngPreview(image, outDir / (name + ".png"), name.rfind("final", 0) == 0);
+        if (isImage(name, ImageKind::Sat)) continue;  // sums, not viewable values
+        writePngPreview(image, outDir / (name + ".png"), isImage(name, ImageKind::Final));
         record(name + ".png");
     }
     nlohmann::json passes = nlohmann::json::array();

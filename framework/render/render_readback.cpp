@@ -1,6 +1,7 @@
 // Renderer's read-back: the maps of every shadowing light into RenderResult's images, and the
 // stub detection that tells an unimplemented stage (output -1) from a wrong one.
 #include "render_internal.h"
+#include "image_name.h"
 
 namespace sl::render_detail {
 bool stubOutput(const Image& out, const Image* in, bool everywhere) {
@@ -23,47 +24,47 @@ void noteStub(const ShaderLibrary& library, RenderResult& result, const std::str
 
 void readBack(const ShaderLibrary& library, const TechniqueRow& row, const ShadowEffect& fx,
               const PassPlan& plan, ShadowMapSet& maps, RenderResult& result) {
-    const bool moments = row.storeDefine.rfind("SL_STORE_MOMENTS4", 0) == 0;
+    const bool moments = row.store == StoreKind::Moments4 || row.store == StoreKind::Moments4_16bit;
     for (auto& [id, m] : maps) {
-        const int li = id.light;
-        const std::string suffix =
-            (li == plan.shadowLights.front() ? "" : "_light" + std::to_string(li)) +
-            (id.cascade > 0 ? "_cascade" + std::to_string(id.cascade) : "");
-        // Every layer of a role, as "<name><suffix>", "<name><suffix>_layer1", ...
-        auto readLayers = [&](TextureRole role, const std::string& name) {
+        // The first shadowing light's maps carry no light in their names.
+        const int light = id.light == plan.shadowLights.front() ? -1 : id.light;
+        auto name = [&](ImageKind kind, int layer = 0) {
+            return ImageName{.kind = kind, .light = light, .cascade = id.cascade, .layer = layer}.str();
+        };
+        // Every layer of a role: the first as the map's name, the others with their layer.
+        auto readLayers = [&](TextureRole role, ImageKind kind) {
             const auto& layers = m.tex.at(role);
-            for (size_t k = 1; k < layers.size(); ++k)
-                result.images[name + suffix + "_layer" + std::to_string(k)] = layers[k].read();
+            for (size_t k = 1; k < layers.size(); ++k) result.images[name(kind, int(k))] = layers[k].read();
             return layers.front().read();
         };
-        Image raw = readLayers(TextureRole::Raw, "moments_raw");
+        Image raw = readLayers(TextureRole::Raw, ImageKind::MomentsRaw);
         // The stub value in every channel: computeMoments' stub, or a depth map of relativeDepth's.
         if (!m.given && stubOutput(raw, nullptr))
             noteStub(library, result, "moments.glsl", moments ? "computeMoments" : "relativeDepth");
-        if (m.tex.count(TextureRole::Second)) result.images["second_depth" + suffix] = m.one(TextureRole::Second).read();
+        if (m.tex.count(TextureRole::Second)) result.images[name(ImageKind::SecondDepth)] = m.one(TextureRole::Second).read();
         if (m.tex.count(TextureRole::Sat)) {
-            Image sat = readLayers(TextureRole::Sat, "sat");
+            Image sat = readLayers(TextureRole::Sat, ImageKind::Sat);
             // sat.comp's stub writes -1 to every texel of the table (twice the map's width).
             const bool satStub = stubOutput(sat, nullptr, true);
             if (satStub) noteStub(library, result, "sat.comp", "prefix-sum pass");
             if (m.tex.count(TextureRole::Filtered)) {
-                Image filtered = readLayers(TextureRole::Filtered, "moments_filtered");
+                Image filtered = readLayers(TextureRole::Filtered, ImageKind::MomentsFiltered);
                 // A stub table makes a correct lookup return -1 at a few border boxes at most,
                 // never everywhere.
                 if ((!satStub && stubOutput(filtered, nullptr)) || stubOutput(filtered, nullptr, true))
                     noteStub(library, result, "sat_lookup.glsl", "satBoxAverage");
-                result.images["moments_filtered" + suffix] = std::move(filtered);
+                result.images[name(ImageKind::MomentsFiltered)] = std::move(filtered);
             }
-            result.images["sat" + suffix] = std::move(sat);
+            result.images[name(ImageKind::Sat)] = std::move(sat);
         } else if (m.tex.count(TextureRole::Filtered)) {
-            Image filtered = readLayers(TextureRole::Filtered, "moments_filtered");
+            Image filtered = readLayers(TextureRole::Filtered, ImageKind::MomentsFiltered);
             if (fx.filter == FilterKind::Gaussian && stubOutput(filtered, &raw))
                 noteStub(library, result, "gaussian_blur.comp", "gaussian blur pass");
-            result.images["moments_filtered" + suffix] = std::move(filtered);
+            result.images[name(ImageKind::MomentsFiltered)] = std::move(filtered);
         } else {
-            result.images["moments_filtered" + suffix] = raw;
+            result.images[name(ImageKind::MomentsFiltered)] = raw;
         }
-        result.images["moments_raw" + suffix] = std::move(raw);
+        result.images[name(ImageKind::MomentsRaw)] = std::move(raw);
     }
 }
 

@@ -81,15 +81,15 @@ struct Object {
     bool castsShadows = true;
 };
 
-// The shadow technique: a row of the technique table (render/technique.h), in the table's order.
-// Msm4 is the student stages' row.
-enum class Technique {
-    Hard, SecondDepth, Pcf, Pcss, Vsm, Evsm2, Evsm4, Csm, Msm4, Msm4Hausdorff, Msm4_16bit, MsmSoft
-};
+// The shadow technique: the index of a row of the technique table (technique.h), which names
+// it; techniqueFromName("pcf") finds one. The default is msm4, the student stages' row.
+enum class Technique : int {};
+// Throws std::invalid_argument listing the names if `name` is not a row.
+Technique techniqueFromName(const std::string& name);
 enum class FilterKind { None, Gaussian, Sat };
 
 struct ShadowEffect {
-    Technique technique = Technique::Msm4;
+    Technique technique = techniqueFromName("msm4");
     int mapSize = 1024;
     std::optional<glm::vec2> depthRange;  // (near, far); empty: derived from the scene bounds
     FilterKind filter = FilterKind::Gaussian;

@@ -201,7 +201,7 @@ void readFilter(const Reader& R, const Node& n, ShadowEffect& fx) {
                 fx.satKernelTexels = float(R.number(v, Range::closed(1, fx.mapSize)));
             if (auto v = n["maxKernelTexels"])
                 fx.satMaxKernelTexels = float(R.number(v, Range::closed(1, fx.mapSize)));
-            if (fx.technique != Technique::Msm4)
+            if (!techniqueRow(fx.technique).perPixelSat)
                 R.fail(k, "a box width in texels: \"per-pixel\" is the msm4 technique's (its "
                           "lighting asks sat_lookup.glsl's satKernelTexels), not " +
                               std::string(toString(fx.technique)) + "'s");
@@ -239,7 +239,7 @@ ShadowEffect readShadow(const Reader& R, const Node& n, bool perspective) {
     if (auto v = n["filter"]) readFilter(R, v, fx);
     if (auto v = n["momentBias"]) fx.momentBias = float(R.number(v, Range::closed(0, 0.1)));
     if (auto v = n["depthBias"]) fx.depthBias = float(R.number(v, Range::closed(0, 0.1)));
-    // The technique's row checks its filter and parameters (render/technique.h).
+    // The technique's row checks its filter and parameters (technique.h).
     validateTechnique(fx, bool(n["filter"]), n["parameters"].v, R.file(), n.ptr);
     return fx;
 }
@@ -457,6 +457,6 @@ const char* toString(FilterKind f) {
     }
     return "?";
 }
-// toString(Technique): the technique table's name (render/technique.cpp).
+// toString(Technique): the technique table's name (technique.cpp).
 
 }  // namespace sl

@@ -67,8 +67,7 @@ RawMapKey rawMapKey(const Scene& /*scene*/, const PassPlan& plan, int light,
     const TechniqueRow& row = techniqueRow(fx.technique);
     const MapLayout layout = mapLayout(fx);
     RawMapKey key;
-    const std::string what = row.storeDefine.rfind("SL_STORE_", 0) == 0
-                                 ? row.storeDefine.substr(9) : row.storeDefine;
+    const std::string what = row.store == StoreKind::File ? row.name : toString(row.store);
     key.label = what + " " + layout.formatName + (layout.layers > 1 ? "×" + std::to_string(layout.layers) : "") +
                 " " + std::to_string(fx.mapSize) + "² L" + std::to_string(light);
     if (row.secondDepth) {

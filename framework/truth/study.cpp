@@ -195,7 +195,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         Scene s = base;
         s.shadow.mapSize = size;
         s.shadow.filter = FilterKind::None;
-        overrideTechnique(s.shadow, Technique::Msm4);
+        overrideTechnique(s.shadow, techniqueFromName("msm4"));
         s.shadow.filter = FilterKind::None;
         RenderResult r = reference.render(s, planPasses(s));
         Image z(size, size, 1);

@@ -33,7 +33,7 @@ std::vector<Combination> combinations(const StudyOptions& o, std::vector<std::st
         bool perPixel = false;  // msm4:perPixel=1, like α a scene setting, not a row parameter
         for (const auto& [name, value] : allParams)
             if (name == "momentBias") momentBias = value;
-            else if (name == "perPixel" && t == Technique::Msm4) perPixel = value != 0.0;
+            else if (name == "perPixel" && row.perPixelSat) perPixel = value != 0.0;
             else params.emplace_back(name, value);
         std::vector<FilterKind> filters;
         for (const auto& f : o.filters) {

@@ -1,5 +1,6 @@
 // ViewOptions: parsing of the view.* settings (see view_options.h).
 #include "view_options.h"
+#include "image_name.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -20,9 +21,10 @@ bool setViewOption(ViewOptions& options, const std::string& key, const std::stri
     if (key == "view.image") {
         // A further light's maps carry a suffix: moments_raw_light1.
         const auto& names = viewImageNames();
-        const bool known = std::any_of(names.begin(), names.end(), [&](const std::string& n) {
-            return value == n || value.rfind(n + "_light", 0) == 0;
-        });
+        const auto n = ImageName::parse(value);
+        const bool known = n && !n->msmIsolated && n->camera.empty() && n->cascade == 0 &&
+                           n->layer == 0 &&
+                           std::find(names.begin(), names.end(), toString(n->kind)) != names.end();
         if (!known)
             throw bad("one of final, shadow, moments_raw, moments_filtered, sat (a further "
                       "light's maps: moments_raw_light1, ...)");

@@ -7,6 +7,7 @@
 // golden_check.h). Beside each EXR, a PNG preview (<image>.png) for people to look at.
 // Hidden scenes' goldens go into goldens/ next to their scene file, never the public folder.
 #include "golden.h"
+#include "image_name.h"
 #include "golden_check.h"
 #include "raw_image.h"
 #include "report.h"
@@ -69,7 +70,7 @@ void writeGolden(const Image& pixels, const fs::path& dir, const std::string& sc
     images[image] = nlohmann::json{{"file", scene + "/" + image + ".exr"},
                                    {"sha256", sha256File(exr)},
                                    {"pixels_sha256", sha256Pixels(stored)}};
-    writePngPreview(previewImage(stored), png, image.rfind("final", 0) == 0);
+    writePngPreview(previewImage(stored), png, isImage(image, ImageKind::Final));
     previews[image] = nlohmann::json{{"file", scene + "/" + image + ".png"},
                                      {"sha256", sha256File(png)},
                                      {"pixels_sha256", sha256Pixels(readImage(png))}};
@@ -122,8 +123,9 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
     const std::string& name = gs.name;
     nlohmann::json images = nlohmann::json::object(), previews = nlohmann::json::object();
     for (const auto& [image, pixels] : result.images) {
-        if (image.rfind("sat", 0) == 0) continue;  // graded through moments_filtered
-        writeGolden(pixels, dir, name, image, image.rfind("moments", 0) == 0, images, previews);
+        if (isImage(image, ImageKind::Sat)) continue;  // graded through moments_filtered
+        const auto parsed = ImageName::parse(image);
+        writeGolden(pixels, dir, name, image, parsed && parsed->moments(), images, previews);
     }
     // The msm stage's reference: lit from the golden filtered moments as stored (rounded),
     // exactly what a student's msm.glsl gets as input.
@@ -131,8 +133,10 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
         const Image stored = readAnyImage(dir / "moments_filtered.exr");
         RenderResult isolated = renderFromMoments(renderer, scene, stored);
         for (const auto& [image, pixels] : isolated.images)
-            if (image.rfind("shadow", 0) == 0)
-                writeGolden(pixels, dir, name, "msm_" + image, false, images, previews);
+            if (auto n = ImageName::parse(image); n && n->kind == ImageKind::Shadow) {
+                n->msmIsolated = true;
+                writeGolden(pixels, dir, name, n->str(), false, images, previews);
+            }
     }
     nlohmann::json entry = {{"scene_sha256", sha256File(gs.path)},
                             {"images", images},

@@ -1,5 +1,6 @@
 // golden_check: see golden_check.h.
 #include "golden_check.h"
+#include "image_name.h"
 #include "metrics.h"
 #include "rubric.h"
 
@@ -12,9 +13,11 @@ namespace sl::grader {
 namespace fs = std::filesystem;
 
 std::string goldenImageStage(const std::string& image) {
-    if (image == "moments_raw") return "moments";
-    if (image.rfind("moments", 0) == 0) return "gaussian";  // the sat stage has the same rule
-    if (image.rfind("final", 0) == 0) return "final";
+    const auto n = ImageName::parse(image);
+    const bool plain = n && !n->msmIsolated;
+    if (image == ImageName{.kind = ImageKind::MomentsRaw}.str()) return "moments";
+    if (plain && n->moments()) return "gaussian";  // the sat stage has the same rule
+    if (plain && n->colour()) return "final";
     return "msm";  // shadow, shadow_overhead, msm_shadow...
 }
 

@@ -11,6 +11,7 @@
 //   reference the whole reference solution                         -> all of the above
 // The images go out as .raw (raw_image.h). The filter stages read their input from a file, so they are isolated with goldens alone.
 #include "worker.h"
+#include "image_name.h"
 
 #include "grader.h"
 
@@ -221,13 +222,16 @@ void runWorker(const WorkerArgs& a) {
             RenderResult isolated =
                 renderFromMoments(renderer, scene, result.images.at("moments_filtered"));
             for (auto& [name, image] : isolated.images)
-                if (name.rfind("shadow", 0) == 0) result.images["msm_" + name] = std::move(image);
+                if (auto n = ImageName::parse(name); n && n->kind == ImageKind::Shadow) {
+                    n->msmIsolated = true;
+                    result.images[n->str()] = std::move(image);
+                }
         }
     }
     const std::string prefix = a.stage ? a.stage->image : "";
     fs::create_directories(a.out);
     for (const auto& [name, image] : result.images) {
-        if (name.rfind("sat", 0) == 0) continue;  // the table itself is never compared
+        if (isImage(name, ImageKind::Sat)) continue;  // the table itself is never compared
         if (!prefix.empty() && name.rfind(prefix, 0) != 0) continue;
         writeRaw(image, fs::path(a.out) / (name + ".raw"));
         out.images.push_back(name);

@@ -7,6 +7,7 @@
 // Hidden scenes never appear in report/ (it may be forwarded to a student); the staff page
 // (report-staff/) shows them, marked.
 #include "report.h"
+#include "image_name.h"
 
 #include "image_io.h"
 #include "results.h"
@@ -152,7 +153,7 @@ void ReportWriter::add(const TestResult& t, const std::string& image, const Imag
     std::string base = "img/";
     for (char ch : t.scene + "_" + t.stage + "_" + image)
         base += std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' ? ch : '-';
-    const bool srgb = image.rfind("final", 0) == 0;
+    const bool srgb = isImage(image, ImageKind::Final);
     const int step = stepFor(ref);
     const bool sameSize = student.width == ref.width && student.height == ref.height;
     // Full-size images where something is wrong and the preview is reduced; not where most of

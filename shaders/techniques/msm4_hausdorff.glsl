@@ -8,6 +8,7 @@
 // in front of z_f: w(0) + [x < z_f] w(x). Bias α toward (½, ½, ½, ½), as msm.glsl. The
 // Hamburger case is the solution's momentShadowIntensity (msm.glsl, same α); the roots come from
 // techniques/msm_hamburger.glsl, which solves the msm stage: instructor kit only.
+#include "techniques/msm_hamburger.glsl"  // instructor kit only (it solves the msm stage)
 
 float msm4HausdorffShadowIntensity(vec4 unbiased, float zf, float alpha) {
     vec4 b = mix(unbiased, vec4(0.5), alpha);

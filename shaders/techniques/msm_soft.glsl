@@ -10,6 +10,7 @@
 // The SAT lets each pixel choose its own blur: penumbrae harden toward contact. The blocker
 // search needs the canonical representation's roots (techniques/msm_hamburger.glsl), which
 // solve the msm stage: instructor kit only.
+#include "techniques/msm_hamburger.glsl"  // instructor kit only (it solves the msm stage)
 #ifndef SL_PROBE
 uniform float uSearchTexels;
 uniform float uMaxKernelTexels;

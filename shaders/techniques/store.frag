@@ -7,8 +7,10 @@
 //   SL_STORE_CSM             (cos c_k z, sin c_k z)    (csm.glsl, SL_MAP_LAYERS RGBA32F)
 //   SL_STORE_MOMENTS4        computeMoments(z)         (moments.glsl; RGBA32F)
 //   SL_STORE_MOMENTS4_16BIT  Θ computeMoments(z) + offset  (msm4_16bit.glsl, RGBA16)
+//   SL_STORE_FILE            techniqueStore(z) of the row's own file (one layer), which
+//                            declares under SL_STORE_PASS what it stores
 // A map that a filter stage reads is RGBA32F (VSM and EVSM2 then leave z and w blank).
-// The CPU mirror of the store at z = 1 is the clear value (technique.h shadowClearValues).
+// The CPU mirror of the store at z = 1 is the row's clear value (technique.h).
 // (Helpers are included unconditionally: includes are once per program, whatever the #if.)
 #include "moments.glsl"
 #undef SL_STAGE_MSM  // the shadow pass reconstructs nothing: no msm.glsl here
@@ -17,6 +19,10 @@
 #include "techniques/evsm_common.glsl"
 #include "techniques/csm.glsl"
 #include "techniques/msm4_16bit.glsl"
+#ifdef SL_STORE_FILE
+#define SL_STORE_PASS  // the row's file: its techniqueStore(z) and the uniforms that reads
+#include SL_TECHNIQUE_FILE
+#endif
 #undef SL_PROBE
 uniform float uPositiveExponent;
 uniform float uNegativeExponent;
@@ -57,5 +63,7 @@ void main() {
     outLayers[0] = computeMoments(z);
 #elif defined(SL_STORE_MOMENTS4_16BIT)
     outLayers[0] = msmQuantize16(computeMoments(z));
+#elif defined(SL_STORE_FILE)
+    outLayers[0] = techniqueStore(z);
 #endif
 }

@@ -1,4 +1,5 @@
-// The technique table (see technique.h) and the checks that keep a scene within its row.
+// What follows from a technique's row (technique.h): lookups, the map's layout, the permutation
+// defines, and the checks that keep a scene within its row. The rows: technique_table.cpp.
 #include "technique.h"
 
 #include "scene_limits.h"
@@ -7,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -14,108 +16,6 @@
 
 namespace sl {
 namespace {
-
-using F = FilterKind;
-
-// Bias parameters shared by the depth-comparing rows (hard, pcf, pcss). Units: relative depth
-// for the constant, shadow-map texels for the slope and the normal offset.
-std::vector<TechniqueParameter> depthBiasParameters() {
-    return {
-        {"constantBias", 5e-4, 0.0, 0.1, false, false,
-         "constant bias subtracted from the receiver's relative depth"},
-        {"slopeBias", 1.0, 0.0, 16.0, false, false,
-         "slope-scaled bias: texels of depth change across one texel at the receiver's slope"},
-        {"normalOffset", 0.0, 0.0, 8.0, false, false,
-         "normal-offset bias: the receiver moves along its normal by this many texels"},
-    };
-}
-
-// Rows are listed positionally up to their parameters; `solvesStage`, set on two rows below,
-// is left to its default elsewhere.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-std::vector<TechniqueRow> makeTable() {
-    const std::vector<F> any = {F::Gaussian, F::Sat, F::None};
-    std::vector<TechniqueRow> t;
-    t.push_back({Technique::Hard, "hard", "depth compare, one tap", "depth z", 1, 32, {F::None},
-                 false, false, false, false, "techniques/hard.glsl", "SL_TECHNIQUE_HARD",
-                 "SL_STORE_DEPTH", depthBiasParameters()});
-    t.push_back({Technique::SecondDepth, "second-depth", "midpoint of first and second depth",
-                 "z1; the peeling pass z2 (lighting: (z1 + z2) / 2)", 1, 32, {F::None}, false, false, true, false,
-                 "techniques/second_depth.glsl", "SL_TECHNIQUE_SECOND_DEPTH", "SL_STORE_DEPTH",
-                 {{"peelEpsilon", 1e-5, 0.0, 0.01, false, false,
-                   "a second surface lies at least this far (relative depth) behind the first"}}});
-    t.push_back({Technique::Pcf, "pcf", "percentage-closer filtering, kernel of the filter",
-                 "depth z", 1, 32, any, true, false, false, false, "techniques/pcf.glsl",
-                 "SL_TECHNIQUE_PCF", "SL_STORE_DEPTH", depthBiasParameters()});
-    {
-        auto p = depthBiasParameters();
-        p.push_back({"maxKernelTexels", 48, 1, 256, false, false,
-                     "largest blocker search / PCF kernel, texels"});
-        t.push_back({Technique::Pcss, "pcss", "blocker search, penumbra from light size, PCF",
-                     "depth z", 1, 32, {F::None}, false, false, false, true,
-                     "techniques/pcss.glsl", "SL_TECHNIQUE_PCSS", "SL_STORE_DEPTH", p});
-    }
-    t.push_back({Technique::Vsm, "vsm", "variance shadow maps (Chebyshev–Cantelli)", "(z, z²)", 2,
-                 32, any, false, false, false, false, "techniques/vsm.glsl", "SL_TECHNIQUE_VSM",
-                 "SL_STORE_VSM",
-                 {{"minVariance", 1e-5, 0.0, 0.1, false, false, "lower bound of σ²"},
-                  {"bleedReduction", 0.18, 0.0, 0.99, false, false,
-                   "light-bleeding reduction: lit fractions below it become 0"}}});
-    const std::vector<TechniqueParameter> evsmCommon = {
-        {"positiveExponent", 40.0, 0.0, 100.0, false, false,
-         "c+ of exp(c+ z'), clamped to 42 (float32)"},
-        {"minVariance", 1e-7, 0.0, 0.1, false, false,
-         "lower bound of σ², in depth units squared (scaled by the warp's slope)"},
-        {"bleedReduction", 0.0, 0.0, 0.99, false, false, "as for vsm"}};
-    t.push_back({Technique::Evsm2, "evsm2", "exponential VSM, positive warp", "(e^{c+z'}, e^{2c+z'})",
-                 2, 32, any, false, false, false, false, "techniques/evsm2.glsl",
-                 "SL_TECHNIQUE_EVSM2", "SL_STORE_EVSM2", evsmCommon});
-    {
-        auto p = evsmCommon;
-        p.insert(p.begin() + 1, {"negativeExponent", 5.0, 0.0, 100.0, false, false,
-                                 "c- of -exp(-c- z'), clamped to 42 (float32)"});
-        t.push_back({Technique::Evsm4, "evsm4", "exponential VSM, positive and negative warps",
-                     "(e^{c+z'}, e^{2c+z'}, -e^{-c-z'}, e^{-2c-z'})", 4, 32, any, false, false,
-                     false, false, "techniques/evsm4.glsl", "SL_TECHNIQUE_EVSM4",
-                     "SL_STORE_EVSM4", p});
-    }
-    t.push_back({Technique::Csm, "csm", "convolution shadow maps (Fourier series)",
-                 "(cos c_k z, sin c_k z), k = 1..M", 4, 32, any, false, false, false, false,
-                 "techniques/csm.glsl", "SL_TECHNIQUE_CSM", "SL_STORE_CSM",
-                 {{"terms", 8, 1, 8, true, true, "M, Fourier terms (2M channels, M/2 maps)"},
-                  {"damping", 1.0, 0.0, 20.0, false, false,
-                   "α of the damping exp(-α (k/M)²) against ringing"},
-                  {"offset", 0.03, 0.0, 0.5, false, false,
-                   "the test depth moves this far toward the light (self-shadowing)"},
-                  {"sharpen", 3.0, 1.0, 16.0, false, false,
-                   "visibility v -> clamp(sharpen (v - 1/2) + 1/2)"}}});
-    t.push_back({Technique::Msm4, "msm4", "Hamburger 4MSM (the student stages)",
-                 "(z, z², z³, z⁴)", 4, 32, {F::Gaussian, F::Sat, F::None}, false, true, false,
-                 false, "techniques/msm4.glsl", "SL_TECHNIQUE_MSM4", "SL_STORE_MOMENTS4", {}});
-    t.push_back({Technique::Msm4Hausdorff, "msm4-hausdorff", "Hausdorff 4MSM (Peters & Klein)",
-                 "(z, z², z³, z⁴)", 4, 32, any, false, true, false, false,
-                 "techniques/msm4_hausdorff.glsl", "SL_TECHNIQUE_MSM4_HAUSDORFF",
-                 "SL_STORE_MOMENTS4", {}});
-    t.back().solvesStage =
-        "its test for the Hausdorff case needs the canonical representation's roots, the msm "
-        "stage's solution";
-    t.push_back({Technique::Msm4_16bit, "msm4-16bit", "4MSM, optimised quantised moments",
-                 "4×4-transformed (z, z², z³, z⁴) + offset, UNORM16", 4, 16, any, false, true,
-                 false, false, "techniques/msm4_16bit.glsl", "SL_TECHNIQUE_MSM4_16BIT",
-                 "SL_STORE_MOMENTS4_16BIT",
-                 {{"quantizedMomentBias", 6e-5, 0.0, 0.1, false, false,
-                   "α for 16-bit moments, toward the bias vector of the quantised case"}}});
-    t.push_back({Technique::MsmSoft, "msm-soft", "moment soft shadows (per-pixel SAT kernel)",
-                 "(z, z², z³, z⁴)", 4, 32, {F::Sat}, false, true, false, true,
-                 "techniques/msm_soft.glsl", "SL_TECHNIQUE_MSM_SOFT", "SL_STORE_MOMENTS4",
-                 {{"searchTexels", 32, 2, 256, false, false, "blocker search box, texels"},
-                  {"maxKernelTexels", 64, 1, 256, false, false, "largest filter box, texels"}}});
-    t.back().solvesStage =
-        "its blocker search needs the canonical representation's roots, the msm stage's solution";
-    return t;
-}
-#pragma GCC diagnostic pop
 
 std::string names(const std::vector<std::string>& items) {
     std::string out;
@@ -159,19 +59,40 @@ bool allows(const TechniqueRow& row, FilterKind f) {
 }  // namespace
 
 bool techniqueInKit(const TechniqueRow& row, const std::string& shaders) {
-    return std::ifstream(shaders + "/" + row.lightingFile).good();
+    return std::ifstream(shaders + "/" + row.file).good();
 }
 
-const std::vector<TechniqueRow>& techniqueTable() {
-    static const std::vector<TechniqueRow> table = makeTable();
-    return table;
+const char* toString(StoreKind k) {
+    switch (k) {
+        case StoreKind::Depth: return "DEPTH";
+        case StoreKind::Vsm: return "VSM";
+        case StoreKind::Evsm2: return "EVSM2";
+        case StoreKind::Evsm4: return "EVSM4";
+        case StoreKind::Csm: return "CSM";
+        case StoreKind::Moments4: return "MOMENTS4";
+        case StoreKind::Moments4_16bit: return "MOMENTS4_16BIT";
+        case StoreKind::File: return "FILE";
+    }
+    return "?";
 }
+
+std::vector<glm::vec4> clearToOne(const ShadowEffect&) { return {glm::vec4(1.0f)}; }
 
 const TechniqueRow& techniqueRow(Technique t) {
     const auto& table = techniqueTable();
     const size_t i = size_t(t);
-    if (i >= table.size() || table[i].id != t) throw std::logic_error("technique table out of order");
+    if (i >= table.size()) throw std::logic_error("technique index past the table");
     return table[i];
+}
+
+std::string techniqueDefine(const TechniqueRow& row) {
+    std::string d = "SL_TECHNIQUE_";
+    for (char c : row.name) d += c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
+    return d;
+}
+
+std::string storeDefine(const TechniqueRow& row) {
+    return std::string("SL_STORE_") + toString(row.store);
 }
 
 std::vector<std::string> techniqueNames() {
@@ -181,8 +102,9 @@ std::vector<std::string> techniqueNames() {
 }
 
 Technique techniqueFromName(const std::string& name) {
-    for (const auto& row : techniqueTable())
-        if (row.name == name) return row.id;
+    const auto& table = techniqueTable();
+    for (size_t i = 0; i < table.size(); ++i)
+        if (table[i].name == name) return Technique(int(i));
     throw std::invalid_argument("unknown technique \"" + name + "\": expected one of " +
                                 names(techniqueNames()));
 }
@@ -211,7 +133,11 @@ MapLayout mapLayout(const ShadowEffect& fx) {
     MapLayout m;
     m.channels = row.channels;
     m.layers = 1;
-    if (row.id == Technique::Csm) m.layers = (int(techniqueParameter(fx, "terms")) + 1) / 2;
+    m.usedChannels = row.channels;
+    if (*row.grows.parameter) {
+        m.usedChannels = row.grows.channels * int(techniqueParameter(fx, row.grows.parameter));
+        m.layers = (m.usedChannels + row.channels - 1) / row.channels;
+    }
     const bool filtered = !row.filterInLighting && fx.filter != FilterKind::None;
     static const unsigned f32[5] = {0, GL_R32F, GL_RG32F, 0, GL_RGBA32F};
     static const char* n32[5] = {"", "R32F", "RG32F", "", "RGBA32F"};
@@ -233,7 +159,8 @@ MapLayout mapLayout(const ShadowEffect& fx) {
 
 std::vector<std::string> techniqueDefines(const ShadowEffect& fx) {
     const TechniqueRow& row = techniqueRow(fx.technique);
-    std::vector<std::string> d = {row.define, row.storeDefine,
+    std::vector<std::string> d = {techniqueDefine(row), storeDefine(row),
+                                  "SL_TECHNIQUE_FILE=" + row.file,
                                   "SL_MAP_LAYERS=" + std::to_string(mapLayout(fx).layers)};
     for (const auto& p : row.parameters)
         if (p.compileTime)
@@ -291,7 +218,7 @@ void overrideTechnique(ShadowEffect& fx, Technique t,
     fx.technique = t;
     if (!allows(row, fx.filter)) fx.filter = row.filters.front();
     // A per-pixel SAT box is msm4's lighting (satKernelTexels); others keep the search box.
-    if (t != Technique::Msm4) fx.satPerPixel = false;
+    if (!row.perPixelSat) fx.satPerPixel = false;
     for (const auto& [name, value] : parameters) {
         const TechniqueParameter* p = findParameter(row, name);
         if (!p)
@@ -359,32 +286,7 @@ glm::dvec4 dequantizeMoments16(const glm::dvec4& qIn) {
 }
 
 std::vector<glm::vec4> shadowClearValues(const ShadowEffect& fx) {
-    const TechniqueRow& row = techniqueRow(fx.technique);
-    const std::string& s = row.storeDefine;
-    if (s == "SL_STORE_VSM") return {glm::vec4(1, 1, 0, 0)};
-    if (s == "SL_STORE_EVSM2" || s == "SL_STORE_EVSM4") {
-        const double cp = clampedWarpExponent(techniqueParameter(fx, "positiveExponent"));
-        const double cn = s == "SL_STORE_EVSM4"
-                              ? clampedWarpExponent(techniqueParameter(fx, "negativeExponent"))
-                              : 0.0;
-        // z' = 2z - 1 = 1 at relative depth 1.
-        return {glm::vec4(float(std::exp(cp)), float(std::exp(2 * cp)), float(-std::exp(-cn)),
-                          float(std::exp(-2 * cn)))};
-    }
-    if (s == "SL_STORE_CSM") {
-        const int terms = int(techniqueParameter(fx, "terms"));
-        std::vector<glm::vec4> layers(size_t((terms + 1) / 2), glm::vec4(0.0f));
-        for (int k = 1; k <= terms; ++k) {
-            const double c = M_PI * (2 * k - 1);
-            glm::vec4& l = layers[size_t((k - 1) / 2)];
-            const int o = (k - 1) % 2 * 2;
-            l[o] = float(std::cos(c));
-            l[o + 1] = float(std::sin(c));
-        }
-        return layers;
-    }
-    if (s == "SL_STORE_MOMENTS4_16BIT") return {glm::vec4(quantizeMoments16(glm::dvec4(1.0)))};
-    return {glm::vec4(1.0f)};  // depth 1; moments (1, 1, 1, 1)
+    return techniqueRow(fx.technique).clear(fx);
 }
 
 }  // namespace sl
