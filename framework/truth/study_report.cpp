@@ -75,6 +75,14 @@ std::vector<const StudyRow*> front(const std::vector<const StudyRow*>& rows, boo
 }
 
 // The truth's preview for a light size: its own folder when the study swept light sizes.
+// The row of `rows` under light size `lightSize` closest to the truth (RMSE), or null.
+const StudyRow* mostAccurate(const std::vector<const StudyRow*>& rows, double lightSize) {
+    const StudyRow* best = nullptr;
+    for (const StudyRow* r : rows)
+        if (r->lightSize == lightSize && (!best || r->truth.rmse < best->truth.rmse)) best = r;
+    return best;
+}
+
 std::string truthImage(const fs::path& dir, double lightSize) {
     const std::string own = "truth/light_" + num(lightSize, "%g") + "/truth.png";
     return fs::exists(dir / own) ? own : "truth/truth.png";
@@ -248,13 +256,8 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
             "a filter's bias, a moment bound).</p>\n";
     for (double lightSize : lightSizes)
     for (const std::string& spec : specs) {
-        std::vector<const StudyRow*> rs;
-        for (const StudyRow* r : bySpec[spec])
-            if (r->lightSize == lightSize) rs.push_back(r);
-        if (rs.empty()) continue;
-        const StudyRow* best = *std::min_element(rs.begin(), rs.end(), [](auto a, auto b) {
-            return a->truth.rmse < b->truth.rmse;
-        });
+        const StudyRow* best = mostAccurate(bySpec[spec], lightSize);
+        if (!best) continue;
         const auto crops = writeFailureCrops(dir, *best, truthImage(dir, lightSize),
                                              slugOf(spec) + "_light" + num(lightSize, "%g"));
         for (const FailureCrop& c : crops)
@@ -267,13 +270,8 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
     page << "<h2>Per technique: its most accurate configuration</h2>\n";
     for (double lightSize : lightSizes)
     for (const std::string& spec : specs) {
-        std::vector<const StudyRow*> rs;
-        for (const StudyRow* r : bySpec[spec])
-            if (r->lightSize == lightSize) rs.push_back(r);
-        if (rs.empty()) continue;
-        const StudyRow* best = *std::min_element(rs.begin(), rs.end(), [](auto a, auto b) {
-            return a->truth.rmse < b->truth.rmse;
-        });
+        const StudyRow* best = mostAccurate(bySpec[spec], lightSize);
+        if (!best) continue;
         page << "<h3>" << html(spec) << " — " << html(label(*best)) << ", light size "
              << num(lightSize, "%g") << ": RMSE "
              << num(best->truth.rmse) << " (truth), " << num(best->filtered.rmse)
