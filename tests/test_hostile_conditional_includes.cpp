@@ -6,6 +6,7 @@
 
 #include "glsl_scan.h"
 #include "shader_source.h"
+#include "technique.h"
 
 namespace sl {
 namespace {
@@ -22,8 +23,13 @@ TEST(HostileConditionalIncludes, LightingIncludesTheSatLookupOnlyForSatScenes) {
         fs::copy_file(test::root() / "reference" / name, dir / name);
     test::writeFile(dir / "sat_lookup.glsl", "this file does not compile; // MARKER\n");
     ShaderLibrary lib = ShaderLibrary::forSolution(dir, test::root());
-    EXPECT_FALSE(has(lib.assemble("lighting.frag", {"SL_TECHNIQUE_MSM4"}), "MARKER"));
-    EXPECT_TRUE(has(lib.assemble("lighting.frag", {"SL_TECHNIQUE_MSM4", "SL_FILTER_SAT"}), "MARKER"));
+    // msm4's permutation as the renderer builds it, with a Gaussian and with a SAT.
+    ShadowEffect fx;
+    fx.technique = techniqueFromName("msm4");
+    fx.filter = FilterKind::Gaussian;
+    EXPECT_FALSE(has(lib.assemble("lighting.frag", techniqueDefines(fx)), "MARKER"));
+    fx.filter = FilterKind::Sat;
+    EXPECT_TRUE(has(lib.assemble("lighting.frag", techniqueDefines(fx)), "MARKER"));
 }
 
 TEST(HostileConditionalIncludes, ConditionsAreEvaluatedWithTheProgramsDefines) {
