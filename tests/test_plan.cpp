@@ -234,6 +234,38 @@ TEST(PassPlan, EveryTechniquePlansItsPassesFormatsAndBytes) {
     }
 }
 
+// The plan names each pass's program and the roles it reads; the renderer runs just that.
+TEST(PassPlan, EachPassCarriesItsProgramAndTheRolesItReads) {
+    using Roles = std::vector<TextureRole>;
+    const PassPlan g = planPasses(sceneWith(FilterKind::Gaussian, 1, true));
+    ASSERT_EQ(g.passes.size(), 4u);
+    EXPECT_EQ(g.passes[0].program.fragment, "techniques/store.frag");
+    EXPECT_EQ(g.passes[0].program.defines, g.defines);
+    EXPECT_EQ(g.passes[1].program.vertexOrCompute, "gaussian_blur.comp");
+    EXPECT_EQ(g.passes[1].program.defines,
+              std::vector<std::string>{"SL_BLUR_RADIUS=" + std::to_string(g.effect.gaussianRadius)});
+    EXPECT_EQ(g.passes[1].reads, Roles{TextureRole::Raw});  // RGBA32F already: no widen
+    EXPECT_EQ(g.passes[2].reads, Roles{TextureRole::Scratch});
+    EXPECT_EQ(g.passes[3].program.fragment, "lighting.frag");
+    EXPECT_EQ(g.passes[3].program.defines.back(), "SL_SHADOW_SLOTS=1");
+    EXPECT_EQ(g.passes[3].reads, Roles{TextureRole::Filtered});
+
+    Scene s = sceneWith(FilterKind::Sat, 2, true);
+    s.shadow.technique = techniqueFromName("msm4-16bit");
+    const PassPlan sat = planPasses(s);
+    for (const PlannedPass& p : sat.passes) {
+        if (p.kind == PassKind::SatRows) EXPECT_EQ(p.reads, Roles{TextureRole::Wide});
+        if (p.kind == PassKind::Widen) EXPECT_EQ(p.program.vertexOrCompute, "widen.comp");
+        if (p.kind == PassKind::Lighting) {
+            EXPECT_EQ(p.reads, Roles{TextureRole::Sat});
+            EXPECT_EQ(p.program.defines.back(), "SL_SHADOW_SLOTS=2");
+        }
+    }
+    s = sceneWith(FilterKind::None, 1, true);
+    s.shadow.technique = techniqueFromName("second-depth");
+    EXPECT_EQ(planPasses(s).passes.back().reads, (Roles{TextureRole::Raw, TextureRole::Second}));
+}
+
 TEST(PassPlan, Msm16bitHalvesTheMapOfMsm4) {
     Scene s = sceneWith(FilterKind::Gaussian, 1, true);
     s.shadow.technique = techniqueFromName("msm4");

@@ -64,7 +64,11 @@ void Renderer::copyPass(const Texture& src, const Texture& dst) {
 
 void Renderer::gaussianPass(const Texture& src, const Texture& dst, int radius, float sigma,
                             glm::ivec2 direction) {
-    GlProgram& p = passProgram(PassKind::GaussianX, radius, {});
+    gaussianPass(passProgram(PassKind::GaussianX, radius, {}), src, dst, radius, sigma, direction);
+}
+
+void Renderer::gaussianPass(GlProgram& p, const Texture& src, const Texture& dst, int radius,
+                            float sigma, glm::ivec2 direction) {
     const BufferHandle& buffer = weightsBuffer(radius, sigma);
     p.use();
     p.set("uRadius", radius);
@@ -86,7 +90,10 @@ const BufferHandle& Renderer::weightsBuffer(int radius, float sigma) {
 }
 
 void Renderer::widenPass(const Texture& src, const Texture& dst) {
-    GlProgram& p = passProgram(PassKind::Widen, 0, {});
+    widenPass(passProgram(PassKind::Widen, 0, {}), src, dst);
+}
+
+void Renderer::widenPass(GlProgram& p, const Texture& src, const Texture& dst) {
     p.use();
     p.set("uSource", 0);
     gl::BindTextureUnit(0, src.id());
@@ -95,7 +102,10 @@ void Renderer::widenPass(const Texture& src, const Texture& dst) {
 }
 
 void Renderer::satPass(const Texture& src, const Texture& dst, glm::ivec2 direction) {
-    GlProgram& p = passProgram(PassKind::SatRows, 0, {});
+    satPass(passProgram(PassKind::SatRows, 0, {}), src, dst, direction);
+}
+
+void Renderer::satPass(GlProgram& p, const Texture& src, const Texture& dst, glm::ivec2 direction) {
     p.use();
     p.set("uDirection", direction);
     const glm::ivec2 map(dst.width / satTableWidth(1), dst.height);  // the moment map's size
@@ -106,7 +116,11 @@ void Renderer::satPass(const Texture& src, const Texture& dst, glm::ivec2 direct
 }
 
 void Renderer::satResolvePass(const Texture& sat, const Texture& dst, float kernelTexels) {
-    GlProgram& p = passProgram(PassKind::SatResolve, 0, {});
+    satResolvePass(passProgram(PassKind::SatResolve, 0, {}), sat, dst, kernelTexels);
+}
+
+void Renderer::satResolvePass(GlProgram& p, const Texture& sat, const Texture& dst,
+                              float kernelTexels) {
     p.use();
     p.set("uSat", 0);
     p.set("uSatKernel", kernelTexels);

@@ -9,6 +9,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <set>
+#include <stdexcept>
+#include <utility>
 
 namespace sl {
 
@@ -41,6 +44,24 @@ const char* toString(TextureRole role) {
         case TextureRole::CameraDepth: return "camera-depth";
     }
     return "?";
+}
+
+PassProgram passProgramFor(PassKind kind, int blurRadius, const std::vector<std::string>& defines) {
+    switch (kind) {
+        case PassKind::Shadow: return {"scene.vert", "techniques/store.frag", defines};
+        case PassKind::ShadowSecond: return {"scene.vert", "techniques/second_depth_peel.frag", defines};
+        case PassKind::Widen: return {"widen.comp", "", {}};
+        case PassKind::GaussianX:
+        case PassKind::GaussianY:
+            // The radius is a compile-time constant (one program per radius): llvmpipe then
+            // unrolls the taps and keeps the window in registers (docs/performance.md).
+            return {"gaussian_blur.comp", "", {"SL_BLUR_RADIUS=" + std::to_string(blurRadius)}};
+        case PassKind::SatRows:
+        case PassKind::SatColumns: return {"sat.comp", "", {}};
+        case PassKind::SatResolve: return {"sat_resolve.comp", "", {}};
+        case PassKind::Lighting: return {"scene.vert", "lighting.frag", defines};
+    }
+    throw std::logic_error("no program for this pass");
 }
 
 const PlannedTexture* PassPlan::texture(int light, TextureRole role, int cascade) const {
@@ -87,19 +108,22 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
         t.cascade = c;
         plan.textures.push_back(std::move(t));
     };
-    auto pass = [&](PlannedPass p) {
+    auto pass = [&](PassKind kind, std::string why, TextureRole writes) {
+        PlannedPass p;
+        p.kind = kind;
+        p.light = i;
+        p.why = std::move(why);
+        p.writes = writes;
         p.cascade = c;
         plan.passes.push_back(std::move(p));
     };
     add(tex(i, -1, TextureRole::Depth, "DEPTH32F", GL_DEPTH_COMPONENT32F, n, n, 1, 4));
     add(tex(i, -1, TextureRole::Raw, map.formatName, map.glFormat, n, n, map.layers, map.bytesPerTexel));
-    pass(
-        {PassKind::Shadow, i, -1, light + " casts shadows; stores " + row.stored, TextureRole::Raw});
+    pass(PassKind::Shadow, light + " casts shadows; stores " + row.stored, TextureRole::Raw);
     if (row.secondDepth) {
         add(tex(i, -1, TextureRole::Second, "R32F", GL_R32F, n, n, 1, 4));
-        pass({PassKind::ShadowSecond, i, -1,
-                               "second-depth: peel the first surface, store the midpoint",
-                               TextureRole::Second});
+        pass(PassKind::ShadowSecond, "second-depth: peel the first surface, store the midpoint",
+             TextureRole::Second);
     }
     if (!filterPasses || fx.filter == FilterKind::None) return;
     // The filter stages take RGBA32F layers (the stage contract): a 16-bit map is widened first.
@@ -108,15 +132,15 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
     };
     if (map.glFormat != GL_RGBA32F) {
         rgba32f(TextureRole::Wide);
-        pass({PassKind::Widen, i, -1, map.formatName + " map into RGBA32F for the filter stages",
-              TextureRole::Wide});
+        pass(PassKind::Widen, map.formatName + " map into RGBA32F for the filter stages",
+             TextureRole::Wide);
     }
     if (fx.filter == FilterKind::Gaussian) {
         const std::string why = "gaussian filter, radius " + std::to_string(fx.gaussianRadius);
         rgba32f(TextureRole::Scratch);
         rgba32f(TextureRole::Filtered);
-        pass({PassKind::GaussianX, i, -1, why, TextureRole::Scratch});
-        pass({PassKind::GaussianY, i, -1, why, TextureRole::Filtered});
+        pass(PassKind::GaussianX, why, TextureRole::Scratch);
+        pass(PassKind::GaussianY, why, TextureRole::Filtered);
         return;
     }
     char why[128];
@@ -129,11 +153,11 @@ void planLightMaps(PassPlan& plan, int i, int c, const std::string& light,
     // The table has two texels per entry (satTableWidth).
     for (TextureRole role : {TextureRole::Scratch, TextureRole::Sat})
         add(tex(i, -1, role, "RGBA32F", GL_RGBA32F, satTableWidth(n), n, map.layers, 16));
-    pass({PassKind::SatRows, i, -1, why, TextureRole::Scratch});
-    pass({PassKind::SatColumns, i, -1, why, TextureRole::Sat});
+    pass(PassKind::SatRows, why, TextureRole::Scratch);
+    pass(PassKind::SatColumns, why, TextureRole::Sat);
     if (options.resolveSat) {
         rgba32f(TextureRole::Filtered);
-        pass({PassKind::SatResolve, i, -1, "filtered map requested as output", TextureRole::Filtered});
+        pass(PassKind::SatResolve, "filtered map requested as output", TextureRole::Filtered);
     }
 }
 
@@ -154,6 +178,44 @@ std::string identityFilter(const ShadowEffect& fx) {
     if (fx.filter == FilterKind::Gaussian && fx.gaussianRadius == 0)
         return "gaussian filter of radius 0 (one tap of weight 1): no filter passes";
     return "";
+}
+
+// Fills each pass's program and the roles it reads, from what the plan allocated: a filter
+// reads the widened copy where there is one; lighting samples the filter's output, else the
+// raw map (and the second-depth midpoint).
+void describePasses(PassPlan& plan) {
+    std::set<std::pair<int, int>> slots;  // (light, cascade) with maps, as the renderer keeps them
+    for (int light : plan.shadowLights) slots.insert({light, 0});
+    for (const PlannedCascade& c : plan.cascades) slots.insert({c.light, c.cascade});
+    std::vector<std::string> lightingDefines = plan.defines;
+    lightingDefines.push_back("SL_SHADOW_SLOTS=" + std::to_string(slots.size()));
+    std::vector<TextureRole> sampled;
+    if (!plan.shadowLights.empty()) {
+        sampled = {TextureRole::Raw};
+        if (plan.row->secondDepth) sampled.push_back(TextureRole::Second);
+    }
+    for (const PlannedPass& p : plan.passes)
+        if (p.kind == PassKind::GaussianY) sampled = {TextureRole::Filtered};
+        else if (p.kind == PassKind::SatColumns) sampled = {TextureRole::Sat};
+    for (PlannedPass& p : plan.passes) {
+        const bool lighting = p.kind == PassKind::Lighting;
+        p.program = passProgramFor(p.kind, plan.effect.gaussianRadius,
+                                   lighting ? lightingDefines : plan.defines);
+        const TextureRole filterInput = plan.texture(p.light, TextureRole::Wide, p.cascade)
+                                            ? TextureRole::Wide
+                                            : TextureRole::Raw;
+        switch (p.kind) {
+            case PassKind::Shadow: p.reads = {}; break;
+            case PassKind::ShadowSecond: p.reads = {TextureRole::Raw}; break;  // the first surface
+            case PassKind::Widen: p.reads = {TextureRole::Raw}; break;
+            case PassKind::GaussianX:
+            case PassKind::SatRows: p.reads = {filterInput}; break;
+            case PassKind::GaussianY:
+            case PassKind::SatColumns: p.reads = {TextureRole::Scratch}; break;
+            case PassKind::SatResolve: p.reads = {TextureRole::Sat}; break;
+            case PassKind::Lighting: p.reads = sampled; break;
+        }
+    }
 }
 
 bool anyCaster(const Scene& scene) {
@@ -226,8 +288,14 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
         plan.textures.push_back(tex(-1, c, TextureRole::Shadow, "R32F", GL_R32F, cam.width, cam.height, 1, 4));
         plan.textures.push_back(tex(-1, c, TextureRole::CameraDepth, "DEPTH32F", GL_DEPTH_COMPONENT32F,
                                     cam.width, cam.height, 1, 4));
-        plan.passes.push_back({PassKind::Lighting, -1, c, why, TextureRole::Color});
+        PlannedPass lighting;
+        lighting.kind = PassKind::Lighting;
+        lighting.camera = c;
+        lighting.why = why;
+        lighting.writes = TextureRole::Color;
+        plan.passes.push_back(std::move(lighting));
     }
+    describePasses(plan);
     return plan;
 }
 

@@ -3,6 +3,8 @@
 // format and channels, the filter passes (none for hard, PCF, PCSS), the SAT, the second-depth
 // pass and the lighting permutation. A scene with no shadowing light has no shadow pass and no
 // map; a filter of `none` dispatches nothing; a light's map is rendered once for all cameras.
+// Each pass carries its program (files and permutation) and the texture roles it reads and
+// writes: the renderer compiles and binds what the pass names, it does not re-decide.
 #pragma once
 
 #include "scene.h"
@@ -52,13 +54,29 @@ struct PlannedTexture {
     int cascade = 0;         // which of the light's cascades (each has its own set of maps)
 };
 
+// The program a pass runs: a compute shader alone (fragment ""), or vertex + fragment, with
+// its permutation. The renderer compiles one program per description (its cache's key).
+struct PassProgram {
+    std::string vertexOrCompute, fragment;
+    std::vector<std::string> defines;
+};
+
+// The one place that names a pass kind's files and permutation. `blurRadius`: the Gaussians'
+// (a compile-time constant); `defines`: the technique's, for shadow and lighting passes (the
+// lighting's with SL_SHADOW_SLOTS, planPasses adds it).
+PassProgram passProgramFor(PassKind kind, int blurRadius, const std::vector<std::string>& defines);
+
 struct PlannedPass {
-    PassKind kind;
+    PassKind kind = PassKind::Shadow;
     int light = -1;   // index into Scene::lights (shadow and filter passes)
     int camera = -1;  // index into Scene::cameras (lighting passes)
     std::string why;  // which declared effect calls for it
     TextureRole writes = TextureRole::Raw;
     int cascade = 0;     // shadow and filter passes: which of the light's cascades
+    // The light's textures the pass reads, in order (lighting: what it samples of every
+    // light's maps, in unit order; a map given by the caller stands in for them).
+    std::vector<TextureRole> reads;
+    PassProgram program;  // what it runs (passProgramFor)
 };
 
 // One cascade of a directional light that declares `cascades` > 1 (cascades.h): the slice of

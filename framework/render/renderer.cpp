@@ -1,7 +1,8 @@
 // Renderer::render: allocates what the plan lists, runs its passes in order (timing each) and
-// reads the images back. The passes themselves live in scene_passes.cpp (shadow, lighting),
-// filter_passes.cpp (Gaussian, SAT), pass_programs.cpp (which program each runs) and
-// render_readback.cpp (maps into RenderResult).
+// reads the images back. Each pass runs the program the plan names for it, on the textures of
+// the roles it names (PlannedPass::program, reads, writes): the renderer decides neither. The
+// passes themselves live in scene_passes.cpp (shadow, lighting), filter_passes.cpp (Gaussian,
+// SAT), pass_programs.cpp (the program cache) and render_readback.cpp (maps into RenderResult).
 #include "render_internal.h"
 
 #include "cascades.h"
@@ -64,7 +65,6 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     SceneGeometry geometry(scene);
     const ShadowEffect& fx = plan.effect;  // the plan decided; the renderer executes
     const TechniqueRow& row = *plan.row;
-    const std::vector<std::string>& defines = plan.defines;
 
     std::vector<LightView> views;
     for (const Light& light : scene.lights)
@@ -107,11 +107,6 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             m.givenRaw = true;
         }
     }
-    for (auto& [id, m] : maps) {
-        for (auto& t : m.tex.at(TextureRole::Raw)) m.forLighting.push_back(&t);
-        // A given second-depth map: what its (skipped) peel pass would have added.
-        if (m.givenRaw && m.tex.count(TextureRole::Second)) m.forLighting.push_back(&m.one(TextureRole::Second));
-    }
     const std::vector<glm::vec4> clear = shadowClearValues(fx);
 
     struct CameraTargets { Texture color, shadow, depth; };
@@ -133,58 +128,46 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
             result.passCost.push_back(0.0);
             continue;
         }
-        // A filter's input: the raw map, or its RGBA32F copy where it is not RGBA32F.
-        auto filterInput = [&]() -> std::vector<Texture>& {
-            return m->tex.count(TextureRole::Wide) ? m->tex.at(TextureRole::Wide) : m->tex.at(TextureRole::Raw);
-        };
+        GlProgram& prog = program(pass.program);
+        // A filter pass's layers: its one input role and its output role, as the plan says.
+        auto src = [&]() -> std::vector<Texture>& { return m->tex.at(pass.reads.at(0)); };
+        auto dst = [&]() -> std::vector<Texture>& { return m->tex.at(pass.writes); };
+        const glm::ivec2 along = pass.kind == PassKind::GaussianX || pass.kind == PassKind::SatRows
+                                     ? glm::ivec2(1, 0)
+                                     : glm::ivec2(0, 1);
         switch (pass.kind) {
             case PassKind::Shadow:
             case PassKind::ShadowSecond:
-                runShadowPass(passProgram(pass.kind, 0, defines),
-                              pass.kind == PassKind::ShadowSecond, *m, clear, fx, geometry);
+                runShadowPass(prog, pass.kind == PassKind::ShadowSecond, *m, clear, fx, geometry);
                 break;
-            case PassKind::Widen: {
-                auto& raw = m->tex.at(TextureRole::Raw);
-                for (size_t k = 0; k < raw.size(); ++k) widenPass(raw[k], m->tex.at(TextureRole::Wide)[k]);
+            case PassKind::Widen:
+                for (size_t k = 0; k < src().size(); ++k) widenPass(prog, src()[k], dst()[k]);
                 break;
-            }
             case PassKind::GaussianX:
-            case PassKind::GaussianY: {
-                const bool x = pass.kind == PassKind::GaussianX;
-                auto& src = x ? filterInput() : m->tex.at(TextureRole::Scratch);
-                auto& dst = m->tex.at(x ? TextureRole::Scratch : TextureRole::Filtered);
-                for (size_t k = 0; k < src.size(); ++k)
-                    gaussianPass(src[k], dst[k], fx.gaussianRadius, fx.gaussianSigma,
-                                 x ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
-                if (!x) {
-                    m->forLighting.clear();
-                    for (auto& t : dst) m->forLighting.push_back(&t);
-                }
+            case PassKind::GaussianY:
+                for (size_t k = 0; k < src().size(); ++k)
+                    gaussianPass(prog, src()[k], dst()[k], fx.gaussianRadius, fx.gaussianSigma, along);
                 break;
-            }
             case PassKind::SatRows:
-            case PassKind::SatColumns: {
-                const bool rows = pass.kind == PassKind::SatRows;
-                auto& src = rows ? filterInput() : m->tex.at(TextureRole::Scratch);
-                auto& dst = m->tex.at(rows ? TextureRole::Scratch : TextureRole::Sat);
-                for (size_t k = 0; k < src.size(); ++k)
-                    satPass(src[k], dst[k], rows ? glm::ivec2(1, 0) : glm::ivec2(0, 1));
-                if (!rows) {
-                    m->forLighting.clear();
-                    for (auto& t : dst) m->forLighting.push_back(&t);
-                }
+            case PassKind::SatColumns:
+                for (size_t k = 0; k < src().size(); ++k) satPass(prog, src()[k], dst()[k], along);
                 break;
-            }
-            case PassKind::SatResolve: {
-                auto& sat = m->tex.at(TextureRole::Sat);
-                for (size_t k = 0; k < sat.size(); ++k)
-                    satResolvePass(sat[k], m->tex.at(TextureRole::Filtered)[k], fx.satKernelTexels);
+            case PassKind::SatResolve:
+                for (size_t k = 0; k < src().size(); ++k)
+                    satResolvePass(prog, src()[k], dst()[k], fx.satKernelTexels);
                 break;
-            }
             case PassKind::Lighting: {
+                // What lighting samples of each light: the pass's roles, in unit order; a
+                // filtered map given by the caller stands in for them.
+                for (auto& [id, lightMaps] : maps) {
+                    lightMaps.forLighting.clear();
+                    const std::vector<TextureRole> given = {TextureRole::Raw};
+                    for (TextureRole role : lightMaps.given ? given : pass.reads)
+                        for (const Texture& layer : lightMaps.tex.at(role)) lightMaps.forLighting.push_back(&layer);
+                }
                 CameraTargets& t = targets[pass.camera];
-                runLightingPass(lightingProgram(plan), scene, plan, scene.cameras.at(pass.camera),
-                                views, maps, geometry, t.color, t.shadow, t.depth);
+                runLightingPass(prog, scene, plan, scene.cameras.at(pass.camera), views, maps,
+                                geometry, t.color, t.shadow, t.depth);
                 break;
             }
         }

@@ -1,4 +1,5 @@
-// Renderer: runs a PassPlan for a scene on the current GL context and reads back its images.
+// Renderer: runs a PassPlan for a scene on the current GL context and reads back its images:
+// each pass with the program it names, on the textures of the roles it names.
 // The passes are the building blocks too: the benchmark and the grader call them directly.
 #pragma once
 
@@ -111,12 +112,18 @@ private:
     // One compiled program per (files, defines), built on first use.
     GlProgram& program(const std::string& vertexOrCompute, const std::string& fragment,
                        const std::vector<std::string>& defines);
-    // The program a pass kind runs: the one place that names its files and permutation.
-    // `blurRadius`: Gaussian passes; `defines`: the technique/filter ones of the scene.
+    // The program a plan's pass names (PlannedPass::program), from the cache.
+    GlProgram& program(const PassProgram& description);
+    // The program a pass kind runs outside a plan (the passes' public entry points, for the
+    // benchmark and the grader): passProgramFor's description.
     GlProgram& passProgram(PassKind kind, int blurRadius, const std::vector<std::string>& defines);
-    // The lighting pass's program for `plan`: its defines plus how many light/cascade slots
-    // have maps (SL_SHADOW_SLOTS, lighting.frag).
-    GlProgram& lightingProgram(const PassPlan& plan);
+    // The filter passes with the program given (render: the plan's; the public ones above:
+    // passProgram's, the same description).
+    void widenPass(GlProgram& p, const Texture& src, const Texture& dst);
+    void gaussianPass(GlProgram& p, const Texture& src, const Texture& dst, int radius,
+                      float sigma, glm::ivec2 direction);
+    void satPass(GlProgram& p, const Texture& src, const Texture& dst, glm::ivec2 direction);
+    void satResolvePass(GlProgram& p, const Texture& sat, const Texture& dst, float kernelTexels);
     const BufferHandle& weightsBuffer(int radius, float sigma);
     void dispatchLines(const GlProgram& p, glm::ivec2 size, glm::ivec2 direction, bool wholeLine);
 

@@ -82,7 +82,6 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
         p.set("uPeelEpsilon", eps);
         p.set("uFirstDepth", 0);
         gl::BindTextureUnit(0, m.one(TextureRole::Raw).id());
-        m.forLighting.push_back(&m.one(TextureRole::Second));
     }
     geometry.draw(p, true, false);
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
