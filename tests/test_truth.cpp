@@ -197,5 +197,33 @@ TEST(Truth, LightSizeIsADiskDiameterOrARectangle) {
     }
 }
 
+// A directional light's size is an angle, as pcss and msm-soft read it (penumbra = size · the
+// blocker-to-receiver distance): seen from the target, its emitter samples span that angle
+// whatever the light's distance; a spot light's disk keeps its width in world units.
+TEST(Truth, DirectionalLightSizeIsAnAngleSeenFromTheTarget) {
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.target = glm::vec3(1, 0, 2);
+    sun.size = 0.05f;
+    for (float distance : {2.0f, 14.0f}) {
+        sun.position = sun.target + distance * glm::normalize(glm::vec3(-3, 4, 1));
+        const glm::vec3 axis = glm::normalize(sun.position - sun.target);
+        float widest = 0.0f;
+        const int m = 16;
+        for (int j = 0; j < m; ++j)
+            for (int i = 0; i < m; ++i) {
+                const glm::vec3 d = glm::normalize(emitterSample(sun, i, j, m, 0.999f, 0.5f) - sun.target);
+                widest = std::max(widest, std::acos(std::min(1.0f, glm::dot(d, axis))));
+            }
+        // The outermost strata reach the rim: half the angle, to the jitter's last 1/m.
+        EXPECT_LE(widest, 0.5f * sun.size * 1.001f) << distance;
+        EXPECT_GE(widest, 0.5f * sun.size * (1.0f - 1.0f / m)) << distance;
+    }
+    Light spot = sun;
+    spot.type = LightType::Spot;
+    const glm::vec3 s = emitterSample(spot, 1, 0, 2, 0.999f, 0.5f);
+    EXPECT_NEAR(glm::length(s - spot.position), 0.5f * spot.size, 0.01f * spot.size);
+}
+
 }  // namespace
 }  // namespace sl

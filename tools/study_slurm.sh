@@ -23,7 +23,7 @@ if [ "${SHADOWLAB_SLURM:-}" = local ] || ! command -v sbatch > /dev/null; then
 fi
 q() { printf '%q ' "$@"; }
 array=$(sbatch --parsable --job-name=shadowlab-study --array=1-"$N" --output="$OUT/shard_%a.log" \
-  --wrap "$(q "$BIN" study "${OPTS[@]}") --shard \$SLURM_ARRAY_TASK_ID/$N --out $(q "$OUT")/shard_\$SLURM_ARRAY_TASK_ID")
+  --wrap "$(q "$BIN" study "${OPTS[@]}") --shard \$SLURM_ARRAY_TASK_ID/$N --out $(printf %q "$OUT")/shard_\$SLURM_ARRAY_TASK_ID")
 shards=""; for k in $(seq 1 "$N"); do shards+="$(q "$OUT/shard_$k")"; done
 merge=$(sbatch --parsable --job-name=shadowlab-study-merge --dependency=afterok:"$array" \
   --output="$OUT/merge.log" --wrap "$(q "$BIN" study "${OPTS[@]}") --merge $shards--out $(q "$OUT")")

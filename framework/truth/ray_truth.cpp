@@ -59,6 +59,10 @@ glm::vec3 emitterSample(const Light& light, int i, int j, int m, float u, float 
         r *= 0.5f * light.size;
         q = {r * std::cos(phi), r * std::sin(phi)};
     }
+    // A directional light's size is an angle (radians), as the soft-shadow techniques read it
+    // (penumbra = size · blocker-to-receiver distance): its emitter, seen from the target, spans
+    // that angle, so the disk is size · |position − target| wide where it stands.
+    if (light.type == LightType::Directional) q *= glm::length(light.position - light.target);
     return light.position + q.x * eu + q.y * ev;
 }
 

@@ -40,7 +40,8 @@ int stratifiedSide(int samples);
 
 // Points on the emitter for stratum (i, j) of an m × m grid, jittered by (u, v) in [0, 1)²:
 // world position of the sample (disk through Shirley & Chiu's concentric map, area-preserving,
-// so equal strata of the square are equal areas of the disk).
+// so equal strata of the square are equal areas of the disk). A directional light's size is the
+// emitter's angular diameter in radians seen from its target (docs/scenes.md).
 glm::vec3 emitterSample(const Light& light, int i, int j, int m, float u, float v);
 
 // Deterministic: the jitter is a hash of (pixel, stratum), so equal inputs give equal bytes at

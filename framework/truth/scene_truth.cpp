@@ -17,8 +17,9 @@
 namespace sl {
 namespace {
 
-// Bump when the truth's definition changes, so stale cache entries are never read.
-constexpr const char* kTruthVersion = "truth-1";
+// Bump when the truth's definition changes, so stale cache entries are never read
+// (2: a directional light's size is an angle).
+constexpr const char* kTruthVersion = "truth-2";
 
 std::string fileBytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);

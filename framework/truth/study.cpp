@@ -50,12 +50,15 @@ std::string studyFmt(const char* f, double a, double b = 0, double c = 0) {
 // The SAT box of the same variance as the Gaussian of radius r (σ = r / 2): σ·√12 texels.
 double satBoxTexels(int radius) { return 0.5 * radius * std::sqrt(12.0); }
 
-// The scene with every light of the given size (< 0: as the file has it).
+// The scene with every light a disk that wide (< 0: as the file has it). A directional light's
+// size is an angle: the same disk at its position, seen from its target (docs/scenes.md).
 Scene withLightSize(const Scene& base, double size) {
     Scene s = base;
     if (size < 0) return s;
     for (Light& l : s.lights) {
-        l.size = float(size);
+        l.size = l.type == LightType::Directional
+                     ? float(size / double(glm::length(l.position - l.target)))
+                     : float(size);
         l.rectangle = glm::vec2(0.0f);  // a disk
     }
     return s;
