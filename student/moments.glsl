@@ -1,7 +1,7 @@
 // moments.glsl: relative depth and the four moments stored in the shadow map.
 // Stage contract: docs/stage_contract.md (the part that concerns this file is repeated here).
 //
-// Used by the shadow pass (shaders/shadow_moments.frag) for every texel of the shadow map:
+// Used by the shadow pass (shaders/techniques/store.frag) for every texel of the shadow map:
 //     moments = computeMoments(relativeDepth(lightDepth, depthRange));
 // and by the lighting pass for the fragment it shades (relativeDepth only).
 // Do not write a #version line: the framework prepends `#version 450 core`.

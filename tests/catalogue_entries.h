@@ -34,7 +34,7 @@ constexpr double kMutantMinFraction = 1e-3;
 // How far (texels) a per-pixel SAT box may move between correct satKernelTexels (catalogue.json's
 // sat_kernel_* alternatives against the reference, scenes/penumbra.json): measured 0.062 on
 // Mesa 22.3.6, both on the earlier reference's table (sat_base), whose box averages are 5.7e-6
-// off; twice that, as the grader's kSatKernelAbs.
+// off; twice that, as the grader's sat_kernel_abs (grader/rubric.json).
 constexpr double kKernelSpread = 0.125;
 
 struct Entry {

@@ -137,6 +137,7 @@ TEST(FairnessRubric, DocsQuoteTheRubricsThresholds) {
     for (auto [a, b] : std::initializer_list<std::pair<double, double>>{{r.momentsAbs, d.momentsAbs}, {r.momentsRel, d.momentsRel},
                         {r.filterAbs, d.filterAbs}, {r.filterRel, d.filterRel},
                         {r.worstTexelFactor, d.worstTexelFactor}, {r.satRounding, d.satRounding},
+                        {r.satKernelAbs, d.satKernelAbs}, {r.satKernelRel, d.satKernelRel},
                         {r.shadowTol, d.shadowTol}, {r.finalTol, d.finalTol}, {r.passFraction, d.passFraction},
                         {r.zeroFraction, d.zeroFraction}})
         EXPECT_EQ(a, b);
@@ -174,9 +175,11 @@ TEST(FairnessRubric, DocsQuoteTheRubricsThresholds) {
         {"docs/grading.md", "`stages.<stage>.worst_texel_cap` \\| gaussian and sat: NUM", {r.worstTexelCap.at("sat")}},
         {"docs/grading.md",
          "`moments_abs` NUM, `moments_rel` NUM, `filter_abs` NUM, `filter_rel` NUM, `worst_texel_factor` NUM, "
-         "`sat_rounding` NUM, `shadow` NUM, `final` NUM",
-         {r.momentsAbs, r.momentsRel, r.filterAbs, r.filterRel, r.worstTexelFactor, r.satRounding, r.shadowTol,
-          r.finalTol}},
+         "`sat_rounding` NUM, `sat_kernel_abs` NUM, `sat_kernel_rel` NUM, `shadow` NUM, `final` NUM",
+         {r.momentsAbs, r.momentsRel, r.filterAbs, r.filterRel, r.worstTexelFactor, r.satRounding, r.satKernelAbs,
+          r.satKernelRel, r.shadowTol, r.finalTol}},
+        {"docs/stage_contract.md", "`grader/rubric.json`: NUM \\+ NUM %", {r.satKernelAbs, pct(r.satKernelRel)}},
+        {"docs/grading.md", "\\(NUM texels \\+ NUM %\\)", {r.satKernelAbs, pct(r.satKernelRel)}},
         {"docs/grading.md", "\\(`shadow` NUM in G, `final` NUM in linear colour\\)", {r.shadowTol, r.finalTol}},
         {"docs/grading.md", "moments NUM, gaussian NUM, sat NUM, msm NUM, robustness NUM, final NUM \\|",
          {r.weights.at("moments"), r.weights.at("gaussian"), r.weights.at("sat"), r.weights.at("msm"),

@@ -17,11 +17,8 @@ namespace sl {
 // both in texels).
 inline constexpr const char* kSatKernelImage = "moments_filtered_kernel";
 
-// A kernel passes within kSatKernelAbs + kSatKernelRel · the reference's width (texels): twice
-// the widest spread of the correct variants (the catalogue's sat_kernel_* alternatives on the
-// earlier reference's table: 0.062 texels on scenes/penumbra.json, Mesa 22.3.6), where the
-// mutants move boxes by 37 to 56 texels.
-inline constexpr double kSatKernelAbs = 0.125, kSatKernelRel = 0.01;
+// The grader passes a width within the rubric's sat_kernel_abs + sat_kernel_rel · the
+// reference's width (grader/rubric.json; why those values: docs/grading.md).
 
 // satKernelTexels of `library` over `rawMoments` (the light's moment map, as the shadow pass
 // stores it) for the scene's first shadowing light, on a grid of at most 128 × 128 cells.

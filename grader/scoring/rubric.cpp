@@ -161,13 +161,16 @@ void applyRubric(Rubric& r, const json& j, const std::string& file) {
     if (j.contains("tolerances")) {
         const json& t = j["tolerances"];
         c.keys(t, "/tolerances", {"moments_abs", "moments_rel", "filter_abs", "filter_rel",
-                                  "sat_rounding", "shadow", "final", "worst_texel_factor"});
+                                  "sat_rounding", "sat_kernel_abs", "sat_kernel_rel", "shadow", "final",
+                                  "worst_texel_factor"});
         r.worstTexelFactor = c.number(t, "/tolerances", "worst_texel_factor", r.worstTexelFactor, 1.0, 1e12);
         r.momentsAbs = c.number(t, "/tolerances", "moments_abs", r.momentsAbs, 0.0, 1.0, true);
         r.momentsRel = c.number(t, "/tolerances", "moments_rel", r.momentsRel, 0.0, 1.0);
         r.filterAbs = c.number(t, "/tolerances", "filter_abs", r.filterAbs, 0.0, 1.0, true);
         r.filterRel = c.number(t, "/tolerances", "filter_rel", r.filterRel, 0.0, 1.0);
         r.satRounding = c.number(t, "/tolerances", "sat_rounding", r.satRounding, 0.0, 1e6);
+        r.satKernelAbs = c.number(t, "/tolerances", "sat_kernel_abs", r.satKernelAbs, 0.0, 1e3, true);
+        r.satKernelRel = c.number(t, "/tolerances", "sat_kernel_rel", r.satKernelRel, 0.0, 1.0);
         r.shadowTol = c.number(t, "/tolerances", "shadow", r.shadowTol, 0.0, 1.0, true);
         r.finalTol = c.number(t, "/tolerances", "final", r.finalTol, 0.0, 1.0, true);
     }

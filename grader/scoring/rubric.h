@@ -21,6 +21,8 @@ struct Rubric {
     // derived from the spread of correct variants (docs/grading.md).
     double momentsAbs = 0.0, momentsRel = 0.0, satRounding = 0.0;
     double filterAbs = 0.0, filterRel = 0.0;
+    // sat on a per-pixel scene: satKernelTexels' widths, in texels (sat_kernel_ladder.h).
+    double satKernelAbs = 0.0, satKernelRel = 0.0;
     double shadowTol = 0.0, finalTol = 0.0;
     std::string visibility;
     std::string hiddenVisibility;

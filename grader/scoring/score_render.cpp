@@ -45,8 +45,8 @@ Comparison compareStage(const RenderToScore& job, const Rubric& rubric, const Im
                         const Image& ref, const std::string& image) {
     const CompareBy by = job.stage.compareBy;
     if (by == CompareBy::Shadow) return compareImages(mine, ref, rubric.shadowTol);
-    if (image == kSatKernelImage)  // box widths in texels: relative (sat_kernel_ladder.h)
-        return compareMoments(mine, ref, kSatKernelAbs, kSatKernelRel);
+    if (image == kSatKernelImage)  // box widths in texels (sat_kernel_ladder.h)
+        return compareMoments(mine, ref, rubric.satKernelAbs, rubric.satKernelRel);
     if (by == CompareBy::Colour) return compareImages(mine, ref, rubric.finalTol);
     std::vector<double> extra;
     if (job.stage.stage == Stage::Sat && rubric.satRounding > 0) {

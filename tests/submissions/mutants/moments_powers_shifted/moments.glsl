@@ -2,7 +2,7 @@
 // moments.glsl: relative depth and the four moments stored in the shadow map.
 // Reference solution. Stage contract: docs/stage_contract.md.
 //
-// Used by the shadow pass (shaders/shadow_moments.frag) for every texel of the shadow
+// Used by the shadow pass (shaders/techniques/store.frag) for every texel of the shadow
 // map, and by the lighting pass for the fragment it shades (relativeDepth only).
 // Moment Shadow Mapping, Peters & Klein (I3D 2015): a texel stores the power moments
 // b = (b1, b2, b3, b4) = (z, z^2, z^3, z^4) of the depth z of the surface it sees. These
