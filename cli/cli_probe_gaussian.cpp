@@ -9,6 +9,7 @@
 #include "gl_context.h"
 #include "probe.h"
 #include "probe_csv.h"
+#include "stage_functions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -160,7 +161,7 @@ int runGaussianProbe(const ProbeArgs& a, const std::string& backend) {
                   file.c_str(), a.radius, sigma, alongX && alongY ? "passes x then y" : alongX ? "pass x only" : "pass y only");
     report << buf << lines;
     if (stubs == maps.size())
-        report << file << ": gaussian blur pass: not implemented yet (its output is the stub value -1)\n";
+        report << stubNoteText(file, StageFunction::GaussianPass) << "\n";
     else if (beyond == 0 && stubs == 0)
         report << "every map within float rounding of the exact blur (worst " << csvNumber(worstAll) << ")\n";
     else {

@@ -8,6 +8,7 @@
 #include "msm_sweep.h"
 #include "probe.h"
 #include "probe_csv.h"
+#include "stage_functions.h"
 
 #include <chrono>
 #include <cstdio>
@@ -28,7 +29,7 @@ int runMsmSweep(const ProbeArgs& a, const std::string& backend) {
     std::cout << file << ": momentShadowIntensity, seed " << a.seed << "\n"
               << msmSweepSummary(report, cases, g, a.alpha);
     if (report.stub)
-        std::cout << file << ": momentShadowIntensity: not implemented yet (its output is the stub value -1)\n";
+        std::cout << stubNoteText(file, StageFunction::MomentShadowIntensity) << "\n";
     if (!a.out.empty()) {
         Table t;
         t.header = {"check", "m1", "m2", "m3", "m4", "zf", "G", "bound"};

@@ -291,8 +291,11 @@ private:
         if (j.is(Stage::Robustness) ? !w->stubNotes.empty() : w->stubEverywhere) {
             for (const auto& f : j.row->files) note += (note.empty() ? "submission/" : " + ") + f;
             note += ": not implemented yet (its output is the stub value -1)";
+            std::string named;  // every note of the stage's files: each function by name
             for (const auto& n : w->stubNotes)
-                if (n.file == j.row->files.front()) note = n.text;
+                if (std::find(j.row->files.begin(), j.row->files.end(), n.file) != j.row->files.end())
+                    named += (named.empty() ? "" : "\n") + n.text;
+            if (!named.empty()) note = named;
         }
         return scoutNote_[scout] = note;
     }
@@ -400,6 +403,10 @@ private:
             const Job& j = jobs_[scored_];
             if (j.reference() || j.dropped) continue;
             if (!j.ran && j.missing.empty()) return;
+            // A skipped stub's test names every stub its files hold: once every scout is done.
+            if (j.child.notRun && !std::all_of(scouts_.begin(), scouts_.end(),
+                                               [&](const auto& s) { return jobs_[s.second].ran; }))
+                return;
             tests_.push_back(score(j, report_.get()));
         }
     }
@@ -407,6 +414,9 @@ private:
     // The test of a finished render (score_render.h); `fraction` holds its share of the
     // points (assignPoints scales it).
     TestResult score(const Job& job, ReportWriter* report) {
+        // A stub seen by a scout that finished after this job was skipped: named too (every
+        // scout is done by now, scoreReady).
+        if (job.child.notRun) stubbedElsewhere(size_t(&job - jobs_.data()));
         const RenderToScore render{*job.row, scenes_[job.scene], job.out, job.missing, job.child,
                                    job.notRunReason};
         return scoreRender(render, o_, rubric_,

@@ -51,6 +51,8 @@ struct TestResult {
     double fraction = 0.0;    // the fraction of points earned (before scaling to maxScore)
     // Fewer points than the test is worth (beyond the rounding of the points' sums).
     bool lostPoints() const { return score < maxScore - 1e-9; }
+    // The stage is still the stub ("not implemented: FILE: FUNCTION ..."): no diagnosis.
+    bool notImplemented() const { return output.rfind("not implemented", 0) == 0; }
 };
 
 struct GradeSummary {

@@ -39,15 +39,27 @@ std::vector<float> probeMomentShadowIntensity(const ShaderLibrary& library,
     return runProbe<float>(program, b.size());
 }
 
-std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
-                                    const std::vector<glm::vec3>& inputs) {
+static std::vector<glm::vec4> runMomentsProbe(const ShaderLibrary& library,
+                                              const std::vector<glm::vec3>& inputs, bool depthAlone) {
     GlProgram program = GlProgram::compute(library, "probe_moments.comp", {});
     std::vector<glm::vec4> padded;
-    for (const auto& v : inputs) padded.emplace_back(v, 0.0f);
+    for (const auto& v : inputs) padded.emplace_back(v, depthAlone ? 1.0f : 0.0f);
     BufferHandle in = createBuffer(padded.data(),
                                    GLsizeiptr(std::max<size_t>(padded.size(), 1) * 16));
     gl::BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
     return runProbe<glm::vec4>(program, inputs.size());
+}
+
+std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
+                                    const std::vector<glm::vec3>& inputs) {
+    return runMomentsProbe(library, inputs, false);
+}
+
+std::vector<float> probeRelativeDepth(const ShaderLibrary& library,
+                                      const std::vector<glm::vec3>& inputs) {
+    std::vector<float> z;
+    for (const glm::vec4& v : runMomentsProbe(library, inputs, true)) z.push_back(v.x);
+    return z;
 }
 
 // The solution's table of `moments`, built by its sat.comp with the renderer's dispatches.
@@ -64,6 +76,12 @@ static Texture probeSatTable(const ShaderLibrary& library, const Image& moments)
     renderer.satPass(rows, table, {0, 1});
     gl::MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     return table;
+}
+
+Image probeSatTableImage(const ShaderLibrary& library, const Image& moments) {
+    Texture table = probeSatTable(library, moments);
+    gl::MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+    return table.read();
 }
 
 std::vector<float> probeSatKernelTexels(const ShaderLibrary& library, const Image& moments,

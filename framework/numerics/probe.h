@@ -21,6 +21,14 @@ std::vector<float> probeMomentShadowIntensity(const ShaderLibrary& library,
 std::vector<glm::vec4> probeMoments(const ShaderLibrary& library,
                                     const std::vector<glm::vec3>& inputs);
 
+// relativeDepth(lightDepth, (near, far)) alone per input (lightDepth, near, far).
+std::vector<float> probeRelativeDepth(const ShaderLibrary& library,
+                                      const std::vector<glm::vec3>& inputs);
+
+// What the solution's sat.comp makes of `moments` (RGBA, bottom row first) in its two passes:
+// the 2W × H table, as the lighting pass reads it.
+Image probeSatTableImage(const ShaderLibrary& library, const Image& moments);
+
 // satBoxAverage(table, box.xy = centre, box.zw = size), in texel units, where `table` is what
 // the solution's sat.comp makes of `moments` (RGBA, bottom row first, as Image stores it) in
 // its two passes. Tests the sat.comp + sat_lookup.glsl pair, as the contract grades it.

@@ -24,11 +24,11 @@ Image satKernelLadder(const ShaderLibrary& library, const Scene& scene, const Im
     // The lighting pass's frustum width (scene_passes.cpp): spot × depth, directional as is.
     const float frustum = spot ? 2.0f * std::tan(glm::radians(light->coneDegrees * 0.5f))
                                : 2.0f * light->extent;
-    const int cells = std::min(n, 128), step = n / cells;
+    const int cells = std::min(n, 128);
     std::vector<SatKernelCase> cases;
     for (int y = 0; y < cells; ++y)
         for (int x = 0; x < cells; ++x) {
-            const int tx = x * step + step / 2, ty = y * step + step / 2;
+            const auto [tx, ty] = satKernelCellTexel(x, y, cells, n);
             const float surface = rawMoments.at(tx, ty, 0);
             for (float z : {surface, 1.0f}) {
                 SatKernelCase c;

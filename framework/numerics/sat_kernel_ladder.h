@@ -20,6 +20,13 @@ inline constexpr const char* kSatKernelImage = "moments_filtered_kernel";
 // The grader passes a width within the rubric's sat_kernel_abs + sat_kernel_rel · the
 // reference's width (grader/rubric.json; why those values: docs/grading.md).
 
+// The map texel a cell of the ladder's grid samples (`cells` per side, over a map `mapSize`
+// texels wide): the texel at the cell's centre, from the bottom-left.
+inline glm::ivec2 satKernelCellTexel(int x, int y, int cells, int mapSize) {
+    const int step = mapSize / (cells > 0 ? cells : 1);
+    return {x * step + step / 2, y * step + step / 2};
+}
+
 // satKernelTexels of `library` over `rawMoments` (the light's moment map, as the shadow pass
 // stores it) for the scene's first shadowing light, on a grid of at most 128 × 128 cells.
 Image satKernelLadder(const ShaderLibrary& library, const Scene& scene, const Image& rawMoments);

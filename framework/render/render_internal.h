@@ -7,6 +7,7 @@
 #include "light_view.h"
 #include "renderer.h"
 #include "scene_geometry.h"
+#include "stage_functions.h"
 #include "technique.h"
 
 #include <map>
@@ -41,8 +42,7 @@ FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, con
 // `everywhere`, true if every texel of `out` holds it.
 bool stubOutput(const Image& out, const Image* in, bool everywhere = false);
 // Adds "<file>: <function>: not implemented yet ..." to the result's notes, once.
-void noteStub(const ShaderLibrary& library, RenderResult& result, const std::string& file,
-              const std::string& function);
+void noteStub(const ShaderLibrary& library, RenderResult& result, StageFunction function);
 
 // Reads the maps back into `result`, and tells unimplemented stages apart from wrong ones by
 // the stub value.

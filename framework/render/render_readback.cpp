@@ -13,10 +13,9 @@ bool stubOutput(const Image& out, const Image* in, bool everywhere) {
     return everywhere;
 }
 
-void noteStub(const ShaderLibrary& library, RenderResult& result, const std::string& file,
-              const std::string& function) {
-    std::string line = library.displayPath(library.resolve(file)) + ": " + function +
-                       ": not implemented yet (its output is the stub value -1)";
+void noteStub(const ShaderLibrary& library, RenderResult& result, StageFunction function) {
+    const std::string line =
+        stubNoteText(library.displayPath(library.resolve(stageFunction(function).file)), function);
     for (const auto& existing : result.stubNotes)
         if (existing == line) return;
     result.stubNotes.push_back(line);
@@ -40,26 +39,26 @@ void readBack(const ShaderLibrary& library, const TechniqueRow& row, const Shado
         Image raw = readLayers(TextureRole::Raw, ImageKind::MomentsRaw);
         // The stub value in every channel: computeMoments' stub, or a depth map of relativeDepth's.
         if (!m.given && stubOutput(raw, nullptr))
-            noteStub(library, result, "moments.glsl", moments ? "computeMoments" : "relativeDepth");
+            noteStub(library, result, moments ? StageFunction::ComputeMoments : StageFunction::RelativeDepth);
         if (m.tex.count(TextureRole::Second)) result.images[name(ImageKind::SecondDepth)] = m.one(TextureRole::Second).read();
         if (m.tex.count(TextureRole::Sat)) {
             Image sat = readLayers(TextureRole::Sat, ImageKind::Sat);
             // sat.comp's stub writes -1 to every texel of the table (twice the map's width).
             const bool satStub = stubOutput(sat, nullptr, true);
-            if (satStub) noteStub(library, result, "sat.comp", "prefix-sum pass");
+            if (satStub) noteStub(library, result, StageFunction::SatPass);
             if (m.tex.count(TextureRole::Filtered)) {
                 Image filtered = readLayers(TextureRole::Filtered, ImageKind::MomentsFiltered);
                 // A stub table makes a correct lookup return -1 at a few border boxes at most,
                 // never everywhere.
                 if ((!satStub && stubOutput(filtered, nullptr)) || stubOutput(filtered, nullptr, true))
-                    noteStub(library, result, "sat_lookup.glsl", "satBoxAverage");
+                    noteStub(library, result, StageFunction::SatBoxAverage);
                 result.images[name(ImageKind::MomentsFiltered)] = std::move(filtered);
             }
             result.images[name(ImageKind::Sat)] = std::move(sat);
         } else if (m.tex.count(TextureRole::Filtered)) {
             Image filtered = readLayers(TextureRole::Filtered, ImageKind::MomentsFiltered);
             if (fx.filter == FilterKind::Gaussian && stubOutput(filtered, &raw))
-                noteStub(library, result, "gaussian_blur.comp", "gaussian blur pass");
+                noteStub(library, result, StageFunction::GaussianPass);
             result.images[name(ImageKind::MomentsFiltered)] = std::move(filtered);
         } else {
             result.images[name(ImageKind::MomentsFiltered)] = raw;
@@ -77,9 +76,9 @@ void noteLightingStubs(const ShaderLibrary& library, const TechniqueRow& row, co
         depthStub = depthStub || g == -2.0f || g == -3.0f;
         kernelStub = kernelStub || g == -4.0f;  // msm4.glsl: satKernelTexels returned -1
     }
-    if (depthStub) noteStub(library, result, "moments.glsl", "relativeDepth");
-    if (kernelStub) noteStub(library, result, "sat_lookup.glsl", "satKernelTexels");
-    if (msmStub && row.msmStage) noteStub(library, result, "msm.glsl", "momentShadowIntensity");
+    if (depthStub) noteStub(library, result, StageFunction::RelativeDepth);
+    if (kernelStub) noteStub(library, result, StageFunction::SatKernelTexels);
+    if (msmStub && row.msmStage) noteStub(library, result, StageFunction::MomentShadowIntensity);
 }
 
 }  // namespace sl::render_detail

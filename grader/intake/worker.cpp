@@ -26,6 +26,7 @@
 #include "raw_image.h"
 #include "renderer.h"
 #include "scene.h"
+#include "stub_survey.h"
 
 #include <nlohmann/json.hpp>
 
@@ -155,8 +156,8 @@ void runWorker(const WorkerArgs& a) {
                                    {"problems", c.problems()}});
         fs::create_directories(a.out);
         if (stub)
-            out.stubNotes.push_back(stubNote("submission/msm.glsl: momentShadowIntensity: not "
-                                             "implemented yet (it returns the stub value -1)"));
+            out.stubNotes.push_back(stubNote(stubNoteText("submission/msm.glsl",
+                                                          StageFunction::MomentShadowIntensity)));
         out.robustness = {{"score", report.score},
                           {"cases", report.cases.size()},
                           {"failed", report.failed},
@@ -189,9 +190,24 @@ void runWorker(const WorkerArgs& a) {
             renderer.satResolvePass(table, dst, fx.satKernelTexels);
         }
         gl::Finish();
-        result.images["moments_filtered"] = dst.read();
+        const Image& filtered = result.images["moments_filtered"] = dst.read();
         if (sat && fx.satPerPixel)  // satKernelTexels on the same moments (sat_kernel_ladder.h)
             result.images[kSatKernelImage] = satKernelLadder(makeLibrary(a), scene, input);
+        // Which of the stage's functions is the stub, each probed alone (a stub table makes a
+        // correct lookup return 0, not -1): only when the output hints at one.
+        bool hint = false;
+        for (size_t i = 0, n = size_t(filtered.width) * filtered.height; i < n && !hint; ++i)
+            hint = filtered.stubTexel(i) || (sat && !(filtered.pixels[i * 4] > 0.0f));
+        if (auto k = result.images.find(kSatKernelImage); k != result.images.end())
+            for (float w : k->second.pixels) hint = hint || w == -1.0f;
+        std::vector<StageFunction> functions = {StageFunction::GaussianPass};
+        if (sat) functions = {StageFunction::SatPass, StageFunction::SatBoxAverage};
+        if (sat && fx.satPerPixel) functions.push_back(StageFunction::SatKernelTexels);
+        const ShaderLibrary library = makeLibrary(a);
+        if (hint)
+            for (StageFunction f : stubFunctions(library, functions))
+                result.stubNotes.push_back(
+                    stubNoteText(library.displayPath(library.resolve(stageFunction(f).file)), f));
     } else if (is(a, Stage::Msm)) {
         // Lighting only, from the reference's filtered moments (a file: isolated with the
         // goldens alone), sampled bilinearly whatever the scene's filter.
@@ -210,6 +226,7 @@ void runWorker(const WorkerArgs& a) {
             plan = planPasses(scene, {.resolveSat = true});
         }
         result = renderer.render(scene, plan);
+        completeStubNotes(makeLibrary(a), plan, result);  // every stub the render runs, by name
         if (is(a, Stage::Moments))  // relativeDepth outside [near, far] too (depth_ladder.h)
             result.images[kDepthLadderImage] =
                 depthLadderImage(probeMoments(makeLibrary(a), relativeDepthLadder()));

@@ -10,6 +10,7 @@
 //   guards     hard cases outside [0, 1] or non-monotone: the clamps and pivot floors;
 //   interface  `final` loses points while every isolated stage of that scene passes;
 //   ladder     the moments stage's relativeDepth ladder fails (outside [near, far]: no clamp).
+// A stage that is still the stub ("not implemented: ...") gets no diagnosis: it is no bug.
 #include "report_diagnosis.h"
 
 #include "depth_ladder.h"
@@ -139,7 +140,7 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
         if (t.stage == "gaussian") gaussScenes.insert(t.scene);
     }
     for (const auto& t : s.tests) {
-        if (!shown(t.hidden) || !t.lostPoints() || t.stage == "robustness") continue;
+        if (!shown(t.hidden) || !t.lostPoints() || t.stage == "robustness" || t.notImplemented()) continue;
         lostScenes.insert(t.scene);
         if (satScenes.count(t.scene)) lostSat.insert(t.scene);
         if (gaussScenes.count(t.scene)) lostGauss.insert(t.scene);
@@ -166,7 +167,9 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
     static const std::set<std::string> biasSets = {"constant-depth", "two-point", "three-point",
                                                    "c3-zero", "quantized-16bit"};
     for (const auto& t : s.tests) {
-        if (t.stage != "robustness" || !t.lostPoints() || !t.metrics.contains("robustness")) continue;
+        if (t.stage != "robustness" || !t.lostPoints() || t.notImplemented() ||
+            !t.metrics.contains("robustness"))
+            continue;
         const auto& failing = t.metrics["robustness"].value("failing", nlohmann::json::array());
         std::map<std::string, int> bySet;
         int nan = 0, range = 0, monotone = 0;
@@ -206,7 +209,7 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
     // final fails where the isolated stages pass: the stages' interface.
     std::set<std::string> interfaceScenes;
     for (const auto& t : s.tests) {
-        if (t.stage != "final" || !shown(t.hidden) || !t.lostPoints()) continue;
+        if (t.stage != "final" || !shown(t.hidden) || !t.lostPoints() || t.notImplemented()) continue;
         bool othersPass = true, any = false;
         for (const auto& u : s.tests)
             if (u.scene == t.scene && u.stage != "final") any = true, othersPass = othersPass && !u.lostPoints();

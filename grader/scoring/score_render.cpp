@@ -9,6 +9,7 @@
 #include "results.h"
 #include "scene.h"
 #include "shader_source.h"
+#include "stage_functions.h"
 #include "worker.h"
 
 #include <algorithm>
@@ -20,10 +21,67 @@ namespace sl::grader {
 namespace fs = std::filesystem;
 namespace {
 
+// Stub notes ("FILE: FUNCTION: not implemented yet ...", one a line) as one line that names
+// every function: "FILE: F1, F2; FILE2: F3".
+std::string stubFunctionsText(const std::string& notes) {
+    std::vector<std::pair<std::string, std::string>> byFile;  // file -> "F1, F2"
+    std::istringstream lines(notes);
+    for (std::string line; std::getline(lines, line);) {
+        const size_t end = line.find(": not implemented yet");
+        const size_t colon = line.find(": ");
+        if (end == std::string::npos || colon == std::string::npos || colon >= end) continue;
+        const std::string file = line.substr(0, colon), function = line.substr(colon + 2, end - colon - 2);
+        auto it = std::find_if(byFile.begin(), byFile.end(), [&](const auto& f) { return f.first == file; });
+        if (it == byFile.end()) byFile.push_back({file, function});
+        else if (("_, " + it->second + ",").find(", " + function + ",") == std::string::npos)
+            it->second += ", " + function;
+    }
+    std::string text;
+    for (const auto& [file, functions] : byFile) text += (text.empty() ? "" : "; ") + file + ": " + functions;
+    return text.empty() ? "the stub value -1" : text;
+}
+
+// The kernel image's receivers, by channel (sat_kernel_ladder.h).
+const char* kernelReceiver(int channel) {
+    return channel == 0 ? "the lit surface's" : "the far receiver's";
+}
+
+// satKernelTexels' widths in its own words: how many of each receiver's are off.
+std::string kernelWidthsText(const Image& mine, const Image& ref, const Rubric& rubric) {
+    long off[2] = {0, 0};
+    const size_t n = size_t(ref.width) * ref.height;
+    for (size_t i = 0; i < n && mine.pixels.size() == ref.pixels.size(); ++i)
+        for (int c = 0; c < 2; ++c) {
+            const double m = mine.pixels[i * 2 + c], r = ref.pixels[i * 2 + c];
+            off[c] += !(std::fabs(m - r) <= rubric.satKernelAbs + rubric.satKernelRel * std::fabs(r));
+        }
+    std::ostringstream o;
+    o << "satKernelTexels' box widths: " << off[0] << " of " << n << " for the lit surface and "
+      << off[1] << " of " << n << " for the far receiver (behind every caster) are off by more than "
+      << rubric.satKernelAbs << " texels + " << 100.0 * rubric.satKernelRel << " %";
+    return o.str();
+}
+
+// Whether the worst texel lies in the band along the map's border where a border rule acts.
+bool worstAtBorder(const Comparison& c, const Image& ref) {
+    const int band = std::max(4, std::max(ref.width, ref.height) / 32);
+    const int edge = std::min(std::min(c.worstX, ref.width - 1 - c.worstX),
+                              std::min(c.worstY, ref.height - 1 - c.worstY));
+    return c.worstX >= 0 && edge < band;
+}
+
 // Where the worst texel is and what it holds, so that a student can reproduce it (probe).
-std::string worstTexelText(const std::string& image, const Comparison& c) {
+std::string worstTexelText(const std::string& image, const Comparison& c, int mapSize, int cells) {
     std::ostringstream o;
     o.precision(7);
+    if (image == kSatKernelImage) {
+        const glm::ivec2 t = satKernelCellTexel(c.worstX, c.worstY, cells, mapSize);
+        o << "  worst: " << kernelReceiver(c.worstChannel) << " box at map texel (" << t.x << ", "
+          << t.y << ") (from the bottom-left; centre (" << t.x + 0.5 << ", " << t.y + 0.5
+          << ")): " << c.worstValue << " texels wide, expected " << c.worstExpected << " ("
+          << fixedDigits(std::min(c.worst, 1e6), 1) << "x the tolerance)";
+        return o.str();
+    }
     if (image == kDepthLadderImage) {
         const glm::vec3 in = relativeDepthLadder().at(size_t(c.worstX));
         o << "  worst: ladder row " << c.worstX << " (lightDepth " << in.x << ", near " << in.y
@@ -75,7 +133,9 @@ TestResult scoreRobustness(TestResult t, const WorkerResult& worker, const Rubri
     t.fraction = notes.empty() ? rubric.points("robustness", fraction, 1.0) : 0.0;
     t.metrics["robustness"] = r;
     const auto [pass, zero] = rubric.ramp("robustness");
-    std::string head = !notes.empty() ? "not implemented: " + notes.front() + "\n"
+    std::string all;
+    for (const auto& n : notes) all += n + "\n";
+    std::string head = !notes.empty() ? "not implemented: " + stubFunctionsText(all) + "\n" + all
                        : t.fraction >= 1.0 ? std::string("full marks\n")
                        : fixedDigits(100.0 * fraction, 2) + "% of the hard cases pass (full marks from " +
                              fixedDigits(100.0 * pass, 1) + "%, none at " + fixedDigits(100.0 * zero, 1) + "%)\n";
@@ -137,7 +197,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         return t;
     }
     if (job.child.notRun) {
-        t.output = "not implemented: " + job.notRunReason;
+        t.output = "not implemented: " + stubFunctionsText(job.notRunReason) + "\n" + job.notRunReason;
         return t;
     }
     if (!(job.child.kind == ChildResult::Exited && job.child.exitCode == 0)) {
@@ -165,6 +225,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
     if (images.empty()) images.push_back(prefix);
     double fraction = 1.0, worstCap = 1.0;
     double mapsFraction = 1.0, ladderFraction = 1.0;  // the moment maps', the depth ladder's
+    std::string worstWhere;  // the first image's texel beyond the worst-texel factor, in words
     ImageFindings ladderFindings;
     std::ostringstream detail;
     for (const auto& name : images) {
@@ -187,8 +248,8 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
             continue;
         }
         if (ladder && depthLadderStub(mine)) {
-            notes += "submission/moments.glsl: relativeDepth: not implemented yet (it returns "
-                     "the stub value -1)\n";
+            if (notes.find(": relativeDepth: ") == std::string::npos)
+                notes += stubNoteText("submission/moments.glsl", StageFunction::RelativeDepth) + "\n";
             continue;
         }
         Comparison c = compareStage(job, rubric, mine, ref, name);
@@ -206,25 +267,32 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         if (c.nonFinite) detail << "; " << c.nonFinite << " NaN/Inf values (counted wrong)";
         if (c.stubTexels) detail << "; " << c.stubTexels << " texels hold the stub value -1";
         detail << "\n";
-        if (c.worstX >= 0 && c.worst > 1.0) detail << worstTexelText(name, c) << "\n";
+        if (name == kSatKernelImage) detail << "  " << kernelWidthsText(mine, ref, rubric) << "\n";
+        if (c.worstX >= 0 && c.worst > 1.0)
+            detail << worstTexelText(name, c, job.scene.scene->shadow.mapSize, ref.width) << "\n";
+        if (c.worst > rubric.worstTexelFactor && worstWhere.empty())
+            worstWhere = name == kSatKernelImage ? std::string("a box width of satKernelTexels")
+                       : worstAtBorder(c, ref) ? std::string("a texel at the map's border (look at the border rule)")
+                       : "a texel inside the map, at (" + std::to_string(c.worstX) + ", " +
+                             std::to_string(c.worstY) + "), away from the border";
         ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, name);
         f.scene = t.scene, f.stage = t.stage, f.image = name, f.hidden = t.hidden;
         if (report) report->add(t, name, ref, mine, c, f);
         (ladder ? ladderFraction : mapsFraction) =
             std::min(ladder ? ladderFraction : mapsFraction, c.error.empty() ? c.fraction : 0.0);
         if (ladder) ladderFindings = f;
-        if (findings) findings->push_back(f);
+        if (findings && notes.empty()) findings->push_back(f);  // a stub is no bug to diagnose
     }
     t.fraction = notes.empty() ? std::min(rubric.points(job.stage.name, fraction, 1.0), worstCap) : 0.0;
     const auto [pass, zero] = rubric.ramp(job.stage.name);
     std::string head;
-    if (!notes.empty()) head = "not implemented: " + notes;
+    if (!notes.empty()) head = "not implemented: " + stubFunctionsText(notes) + "\n" + notes;
     else if (t.fraction >= 1.0) head = "full marks\n";
     else if (worstCap < 1.0 && t.fraction == worstCap)
-        head = "worst-texel rule: a texel is off by more than " + fixedDigits(rubric.worstTexelFactor, 0) +
-               "x the tolerance (look at the borders and edges), at most " +
+        head = "worst-texel rule: " + worstWhere + " is off by more than " + fixedDigits(rubric.worstTexelFactor, 0) +
+               "x the tolerance, at most " +
                fixedDigits(100.0 * worstCap, 0) + "% of the points; " + fixedDigits(100.0 * fraction, 3) +
-               "% of the texels within tolerance\n";
+               "% within tolerance\n";
     else if (ladderFindings.depthLadder && ladderFraction < 1.0 && ladderFraction <= mapsFraction)
         // The ladder decides the points: say so, not "52% within tolerance" of the stage,
         // whose moment maps may all be right.
