@@ -7,7 +7,9 @@
 #include "kit_test_support.h"
 #include "student_kit.h"
 
+#include <algorithm>
 #include <chrono>
+#include <regex>
 #include <set>
 
 namespace sl {
@@ -124,6 +126,32 @@ TEST(KitStudent, StudentDocsNameNothingTheKitLacks) {
         for (const auto& name : dropped)
             EXPECT_EQ(text.find(name), std::string::npos) << doc << " (student kit) names " << name;
     }
+    // Every path the student's pages and stubs name is in the kit: a file it ships, or a folder
+    // of them (the container files for macOS and Windows, the pass a stub names, ...). Outputs
+    // (out/, build/) and patterns (`scenes/goldens/<scene>/`) are not files to ship.
+    std::vector<std::string> pages = {"README.md", "docs/handout.md", "docs/stage_contract.md",
+                                      "docs/numerics.md", "docs/grading.md", "docs/scenes.md"};
+    for (const auto& e : fs::directory_iterator(test::root() / "student"))
+        pages.push_back("student/" + e.path().filename().string());
+    static const std::regex named(
+        R"((^|[^A-Za-z0-9_./-])((docs|scenes|shaders|student|tools|grader|framework|cli|tests|\.devcontainer)/[A-Za-z0-9_./-]*|Dockerfile)([<*{]?))");
+    auto ships = [&](std::string path) {
+        while (!path.empty() && std::string(".,;:").find(path.back()) != std::string::npos) path.pop_back();
+        return std::any_of(shipped.begin(), shipped.end(), [&](const std::string& f) {
+            return f == path || (path.back() == '/' && f.rfind(path, 0) == 0) || f.rfind(path + "/", 0) == 0;
+        });
+    };
+    int checked = 0;
+    for (const auto& page : pages) {
+        std::string text = test::readFile(test::root() / page);
+        if (page.ends_with(".md")) text = grader::studentMarkdown(text);
+        for (std::sregex_iterator it(text.begin(), text.end(), named), end; it != end; ++it) {
+            if (!(*it)[4].str().empty()) continue;  // a pattern: <scene>, *.json, {a,b}
+            ++checked;
+            EXPECT_TRUE(ships((*it)[2].str())) << page << " (student kit) names " << (*it)[2] << ", which the kit lacks";
+        }
+    }
+    EXPECT_GT(checked, 40);
     // What the framework does with the stage files' preprocessor lines (shader_source.cpp;
     // HostileErrorLines.LineAndExtensionDirectivesAreRefused): #line is refused, not prepended.
     const std::string contract = test::readFile(test::root() / "docs/stage_contract.md");
