@@ -12,6 +12,9 @@
 #include "probe.h"
 #include "probe_cases.h"
 #include "probe_csv.h"
+#include "rubric.h"
+#include "stage_functions.h"
+#include "stub_survey.h"
 
 #include <algorithm>
 #include <cmath>
@@ -163,6 +166,123 @@ Table generate(const std::string& function, const std::string& name, int mapSize
     return t;
 }
 
+// The probe's verdict on msm rows that carry the exact G and its bound (`--generate`'s
+// catalogue and sets): how many are beyond it, and the worst; the stub note for a stub.
+void printMsmVerdict(std::ostream& o, const ShaderLibrary& library, const Table& t,
+                     const std::vector<std::vector<double>>& g) {
+    const std::string file = library.displayPath(library.resolve("msm.glsl"));
+    const int expected = columnIndex(t, "expected"), bound = columnIndex(t, "bound"), name = columnIndex(t, "case");
+    if (!g.empty() && std::all_of(g.begin(), g.end(), [](const auto& r) { return r[0] == -1.0; })) {
+        o << stubNoteText(file, StageFunction::MomentShadowIntensity) << "\n";
+        return;
+    }
+    if (expected < 0 || bound < 0) {
+        o << file << ": " << g.size() << " cases evaluated (no expected and bound columns to check them "
+          << "against: `probe msm --generate catalogue` writes them)\n";
+        return;
+    }
+    size_t beyond = 0, invalid = 0, worst = 0;
+    double worstRatio = -1.0;
+    for (size_t i = 0; i < g.size(); ++i) {
+        const double v = g[i][0], e = std::stod(t.rows[i][size_t(expected)]), b = std::stod(t.rows[i][size_t(bound)]);
+        const double ratio = std::isfinite(v) ? std::fabs(v - e) / std::max(b, 1e-30) : INFINITY;
+        invalid += !std::isfinite(v) || v < 0.0 || v > 1.0;
+        beyond += ratio > 1.0;
+        if (ratio > worstRatio) worstRatio = ratio, worst = i;
+    }
+    o << file << ": momentShadowIntensity on " << g.size() << " cases: ";
+    if (beyond == 0 && invalid == 0) {
+        o << "every G within its case's bound of the exact value (worst " << csvNumber(worstRatio) << "x its bound)\n";
+        return;
+    }
+    o << beyond << " beyond their bound of the exact value, " << invalid << " NaN, Inf or outside [0, 1]; worst: "
+      << (name >= 0 ? t.rows[worst][size_t(name)] : "row " + std::to_string(worst + 1)) << ", G = " << csvNumber(g[worst][0])
+      << ", expected " << t.rows[worst][size_t(expected)] << " +- " << t.rows[worst][size_t(bound)] << "\n";
+}
+
+// The probe's verdict on moments rows that carry the exact moments (`--generate depth-ladder`),
+// within the grader's moments tolerance (grader/rubric.json), and the stub notes.
+void printMomentsVerdict(std::ostream& o, const ShaderLibrary& library, const Table& t,
+                         const std::vector<std::vector<double>>& b) {
+    const std::string file = library.displayPath(library.resolve("moments.glsl"));
+    if (!b.empty() && std::all_of(b.begin(), b.end(), [](const auto& r) { return r[0] == -1.0 && r[1] == -1.0; })) {
+        o << stubNoteText(file, StageFunction::ComputeMoments) << "\n";
+        return;
+    }
+    if (!b.empty() && std::all_of(b.begin(), b.end(), [](const auto& r) { return r[0] == -1.0; })) {
+        o << stubNoteText(file, StageFunction::RelativeDepth) << "\n";
+        return;
+    }
+    int expected[4];
+    for (int c = 0; c < 4; ++c) expected[c] = columnIndex(t, "expected_b" + std::to_string(c + 1));
+    if (std::any_of(expected, expected + 4, [](int i) { return i < 0; })) {
+        o << file << ": " << b.size() << " light depths evaluated (no expected_b1..b4 columns to check them "
+          << "against: `probe moments --generate depth-ladder` writes them)\n";
+        return;
+    }
+    const grader::Rubric rubric = grader::loadRubric(repoRoot() / "grader/rubric.json");
+    size_t off = 0, worst = 0;
+    double worstRatio = -1.0;
+    for (size_t i = 0; i < b.size(); ++i) {
+        double ratio = 0.0;
+        for (int c = 0; c < 4; ++c) {
+            const double e = std::stod(t.rows[i][size_t(expected[c])]), v = b[i][size_t(c)];
+            const double r = std::isfinite(v) ? std::fabs(v - e) / (rubric.momentsAbs + rubric.momentsRel * std::fabs(e)) : INFINITY;
+            ratio = std::max(ratio, r);
+        }
+        off += ratio > 1.0;
+        if (ratio > worstRatio) worstRatio = ratio, worst = i;
+    }
+    o << file << ": computeMoments(relativeDepth(...)) on " << b.size() << " light depths: ";
+    if (off == 0) {
+        o << "every moment within " << rubric.momentsAbs << " + " << rubric.momentsRel << "·|exact| (the grader's "
+          << "tolerance; worst " << csvNumber(worstRatio) << "x it)\n";
+        return;
+    }
+    auto at = [&](const char* column) { return t.rows[worst][size_t(columnIndex(t, column))]; };
+    o << off << " off by more than " << rubric.momentsAbs << " + " << rubric.momentsRel << "·|exact|; worst: row "
+      << worst + 1 << " (lightDepth " << at("lightDepth") << ", near " << at("near") << ", far " << at("far")
+      << "), " << csvNumber(worstRatio) << "x the tolerance\n";
+}
+
+// The probe's verdict on sat-lookup rows (each with its exact box mean): how many are off by
+// more than the grader's sat tolerance (grader/rubric.json), and the worst box. The table comes
+// from the solution's sat.comp, so a stub there is named first: the lookup reads its -1s.
+void printSatLookupVerdict(std::ostream& o, const ShaderLibrary& library, const std::vector<glm::vec4>& boxes,
+                           const std::vector<std::vector<double>>& r) {
+    const std::vector<StageFunction> stubs =
+        stubFunctions(library, {StageFunction::SatPass, StageFunction::SatBoxAverage});
+    for (StageFunction f : stubs)
+        o << stubNoteText(library.displayPath(library.resolve(stageFunction(f).file)), f) << "\n";
+    if (!stubs.empty()) return;
+    const grader::Rubric rubric = grader::loadRubric(repoRoot() / "grader/rubric.json");
+    size_t off = 0, offCentred = 0, worst = 0;
+    double worstRatio = -1.0;
+    for (size_t i = 0; i < r.size(); ++i) {
+        double ratio = 0.0;
+        for (int c = 0; c < 4; ++c) {
+            const double v = r[i][size_t(c)], e = r[i][size_t(c + 4)];
+            ratio = std::max(ratio, std::isfinite(v) ? std::fabs(v - e) / (rubric.filterAbs + rubric.filterRel * std::fabs(e))
+                                                     : INFINITY);
+        }
+        off += ratio > 1.0;
+        offCentred += ratio > 1.0 && texelCentres(boxes[i].x, boxes[i].y) == "yes";
+        if (ratio > worstRatio) worstRatio = ratio, worst = i;
+    }
+    o << library.displayPath(library.resolve("sat_lookup.glsl")) << ": satBoxAverage on " << r.size()
+      << " boxes (over the table of " << library.displayPath(library.resolve("sat.comp")) << "): ";
+    if (off == 0) {
+        o << "every box mean within " << rubric.filterAbs << " + " << rubric.filterRel << "·|exact| (the grader's "
+          << "tolerance; worst " << csvNumber(worstRatio) << "x it)\n";
+        return;
+    }
+    const glm::vec4 b = boxes[worst];
+    o << off << " off by more than " << rubric.filterAbs << " + " << rubric.filterRel << "·|exact| (" << offCentred
+      << " of them centred on a texel centre, as the grader's boxes are); worst: row " << worst + 1 << " (centre "
+      << csvNumber(b.x) << ", " << csvNumber(b.y) << ", size " << csvNumber(b.z) << " x " << csvNumber(b.w) << "), "
+      << csvNumber(worstRatio) << "x the tolerance\n";
+}
+
 int runProbe(const ProbeArgs& a, const std::string& backend) {
     if (a.sweep && a.function != "msm") throw std::invalid_argument("--sweep is for probe msm");
     if (a.sweep) return runMsmSweep(a, backend);
@@ -185,6 +305,7 @@ int runProbe(const ProbeArgs& a, const std::string& backend) {
         for (const auto& r : v) b.push_back({r[0], r[1], r[2], r[3]}), zf.push_back(r[4]);
         for (float g : probeMomentShadowIntensity(library, b, zf, a.alpha)) results.push_back({g});
         writeCsv(a.out, t, {"G"}, results);
+        printMsmVerdict(a.out.empty() ? std::cerr : std::cout, library, t, results);
         return Ok;
     }
     std::vector<glm::vec4> out;
@@ -224,10 +345,12 @@ int runProbe(const ProbeArgs& a, const std::string& backend) {
             if (!haveCentres) shown.rows[i].push_back(texelCentres(boxes[i].x, boxes[i].y));
         }
         writeCsv(a.out, shown, {}, {});
+        printSatLookupVerdict(a.out.empty() ? std::cerr : std::cout, library, boxes, results);
         return Ok;
     }
     for (const auto& m : out) results.push_back({m.x, m.y, m.z, m.w});
     writeCsv(a.out, t, {"b1", "b2", "b3", "b4"}, results);
+    printMomentsVerdict(a.out.empty() ? std::cerr : std::cout, library, t, results);
     return Ok;
 }
 

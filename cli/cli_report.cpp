@@ -16,6 +16,7 @@
 #include "renderer.h"
 #include "scene.h"
 #include "scene_size.h"
+#include "stub_survey.h"
 
 #include <algorithm>
 #include <cmath>
@@ -227,8 +228,9 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
         scaleScene(scene, size);
         useFilter(scene.shadow, filter);
         // Only the step whose moment maps are shown needs the filtered map.
-        const RenderResult r =
-            renderer.render(scene, planPasses(scene, {.resolveSat = i == momentStep}));
+        const PassPlan plan = planPasses(scene, {.resolveSat = i == momentStep});
+        RenderResult r = renderer.render(scene, plan);
+        if (i == momentStep) completeStubNotes(renderer.library(), plan, r);  // one stub hides another
         for (const auto& n : r.stubNotes)
             if (std::find(allNotes.begin(), allNotes.end(), n) == allNotes.end()) allNotes.push_back(n);
         const std::string png = "softness_" + std::to_string(i + 1) + ".png";
@@ -257,7 +259,9 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
         scene.cameras.resize(1);
         scaleScene(scene, size);
         useFilter(scene.shadow, filter);
-        const RenderResult r = renderer.render(scene, planPasses(scene));
+        const PassPlan plan = planPasses(scene);
+        RenderResult r = renderer.render(scene, plan);
+        completeStubNotes(renderer.library(), plan, r);  // the per-pixel kernel, if a stub
         for (const auto& n : r.stubNotes)
             if (std::find(allNotes.begin(), allNotes.end(), n) == allNotes.end()) allNotes.push_back(n);
         writePngPreview(r.images.at("final"), out / "penumbra.png", true);

@@ -12,6 +12,7 @@
 #include "imgui_layer.h"
 #include "paths.h"
 #include "renderer.h"
+#include "stub_survey.h"
 #include "view_options.h"
 #include "view_panels.h"
 
@@ -157,6 +158,7 @@ int runView(ViewArgs a) {
             const Scene s = shownScene();
             plan = planPasses(s, planOptions());
             result = renderer->render(s, plan);
+            completeStubNotes(renderer->library(), plan, result);  // one stub hides another
             if (frame > 0) std::cout << planLine(s, plan) << "\n";
             for (const auto& note : result.stubNotes) std::cout << "note: " << note << "\n";
             dirty = false;

@@ -85,6 +85,22 @@ TEST(FilterBenchmark, StubStagesAreNotImplementedAndGetNoVerdict) {
     EXPECT_EQ(table.find("✓"), std::string::npos) << table;  // nothing stubbed passes
 }
 
+// Each filter's stub is found in what that filter writes: a stubbed sat.comp beside a solved
+// Gaussian (whose output holds no -1) is still "not implemented", and the other way round.
+TEST(FilterBenchmark, EachFilterIsCheckedInItsOwnOutput) {
+    test::sharedContext();
+    for (const char* stub : {"sat.comp", "gaussian_blur.comp"}) {
+        Renderer mixed(ShaderLibrary::mixed(resolveSolution("reference"), {{stub, resolveSolution("student")}},
+                                            test::root()));
+        const BenchReport report = runFilterBenchmark(mixed, 32, 3);
+        const bool satStub = std::string(stub) == "sat.comp";
+        EXPECT_EQ(findRow(report, "sat, rows + columns")->implemented, !satStub) << stub;
+        EXPECT_EQ(findRow(report, "gaussian r=8, x")->implemented, satStub) << stub;
+        EXPECT_EQ(benchVerdict(*findRow(report, satStub ? "sat, rows + columns" : "gaussian r=16, y")),
+                  "not implemented") << stub;
+    }
+}
+
 TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
     test::sharedContext();
     Renderer renderer(test::library("reference"));

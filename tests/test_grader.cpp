@@ -235,6 +235,28 @@ TEST(Grader, FragileMsmVariantsLoseRobustnessPointsWithTheCasesListed) {
             << variant << ": " << out;
         EXPECT_NE(out.find("b = ("), std::string::npos) << out;  // inputs of a failing case
         EXPECT_TRUE(g.full("classic", "moments")) << variant;
+        // The pages quote these counts: each quote is the count this grade measures.
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(out, m, std::regex(R"(([0-9]+) failed)"))) << out;
+        const std::string failed = m[1];
+        const bool bias = variant.find("no_moment_bias") != std::string::npos;
+        const std::vector<std::pair<std::string, std::string>> quotes =
+            bias ? std::vector<std::pair<std::string, std::string>>{
+                       {"docs/grading.md", "Without the moment bias NUM cases are off"},
+                       {"docs/numerics.md", "without the moment bias NUM cases are off"},
+                       {"docs/numerics.md", "\\| the moment bias \\| NUM failures"},
+                       {"docs/catalogue.md", "`msm_no_moment_bias` is off on NUM hard cases"}}
+                 : std::vector<std::pair<std::string, std::string>>{
+                       {"docs/grading.md", "without the guards NUM cases"},
+                       {"docs/numerics.md", "the unguarded solve NUM"},
+                       {"docs/numerics.md", "the final clamp \\| NUM failures"}};
+        for (const auto& [doc, pattern] : quotes) {
+            const std::string text = test::readFile(test::root() / doc);
+            const std::string re = std::regex_replace(pattern, std::regex("NUM"), "([0-9]+)");
+            std::smatch q;
+            ASSERT_TRUE(std::regex_search(text, q, std::regex(re))) << doc << ": no \"" << pattern << "\"";
+            EXPECT_EQ(q[1].str(), failed) << doc << " quotes " << q[0] << "; the grade measures " << failed;
+        }
     }
 }
 

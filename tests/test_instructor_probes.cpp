@@ -150,17 +150,30 @@ TEST(InstructorProbes, RenderChecksTheProbesOfTheReference) {
 }
 
 // Another solution's render only hears about the probes, in notes that name that solution and
-// its value (the stubs': G is -3 where relativeDepth and msm.glsl are both stubs), not the
-// reference.
+// its value (a G inverted from the reference's moments: 0 in the umbra), not the reference. A
+// render with a stub stage gets no probe notes: the stub's -1 would read as a wrong probe.
 TEST(InstructorProbes, RenderOfAnotherSolutionNamesItInTheProbeNotes) {
-    auto r = test::runCommand(test::shadowlabBinary() + " render --solution student --scene " +
-                              test::scenePath("classic").string() + " --out " +
-                              test::tempDir("instructor_probe_notes").string());
+    const fs::path dir = test::tempDir("instructor_probe_notes");
+    const fs::path solution = dir / "g_inverted";
+    fs::create_directories(solution);
+    for (const auto& e : fs::directory_iterator(test::root() / "reference"))
+        fs::copy_file(e.path(), solution / e.path().filename());
+    fs::copy_file(test::root() / "tests/submissions/mutants/msm_g_inverted/msm.glsl", solution / "msm.glsl",
+                  fs::copy_options::overwrite_existing);
+    auto r = test::runCommand(test::shadowlabBinary() + " render --solution " + solution.string() +
+                              " --scene " + test::scenePath("classic").string() + " --out " + (dir / "out").string());
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("note: probe: "), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find("of camera \"main\", student renders -3.0000 (off by 4)"), std::string::npos)
+    EXPECT_TRUE(std::regex_search(r.output, std::regex("of camera \"main\", " + solution.string() +
+                                                       " renders 0\\.00[0-9]+ \\(off by (1|0\\.99[0-9])\\)")))
         << r.output;
     EXPECT_EQ(r.output.find("the reference renders"), std::string::npos) << r.output;
+
+    auto stubs = test::runCommand(test::shadowlabBinary() + " render --solution student --scene " +
+                                  test::scenePath("classic").string() + " --out " + (dir / "stubs").string());
+    ASSERT_EQ(stubs.exitCode, 0) << stubs.output;
+    EXPECT_NE(stubs.output.find("probes: not checked while a stage is a stub"), std::string::npos) << stubs.output;
+    EXPECT_EQ(stubs.output.find("note: probe: "), std::string::npos) << stubs.output;
 }
 
 }  // namespace sl

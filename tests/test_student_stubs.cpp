@@ -1,6 +1,7 @@
 // The student skeleton compiles, runs, and is reported stage by stage as not implemented;
 // a stage is never reported once it is implemented.
 #include "gl_test_support.h"
+#include "stub_survey.h"
 
 #include <fstream>
 
@@ -57,6 +58,60 @@ TEST(StudentStubs, SatLookupStubIsReportedOnceTheScanWorks) {
     RenderResult r = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
     EXPECT_TRUE(mentions(r.stubNotes, "sat_lookup.glsl")) << testing::PrintToString(r.stubNotes);
     EXPECT_FALSE(mentions(r.stubNotes, "sat.comp"));
+}
+
+
+// The list a student works down: every public scene rendered from the untouched stubs names,
+// between them, all seven stage functions, each in the order a frame runs them, although the
+// output of each render shows only the first stub on a path (a stub relativeDepth keeps the
+// lighting from calling satKernelTexels, a stub table leaves satBoxAverage nothing to return).
+TEST(StudentStubs, EveryPublicSceneNamesEveryStubFunctionItRuns) {
+    test::sharedContext();
+    const ShaderLibrary library = test::library("student");
+    Renderer renderer(library);
+    std::vector<std::string> all;
+    for (const auto& e : fs::directory_iterator(test::root() / "scenes")) {
+        if (e.path().extension() != ".json") continue;
+        Scene scene = loadScene(e.path().string());
+        const PassPlan plan = planPasses(scene);
+        RenderResult r = renderer.render(scene, plan);
+        completeStubNotes(library, plan, r);
+        std::vector<std::string> expected;
+        for (StageFunction f : functionsRun(plan))
+            expected.push_back(stubNoteText(library.displayPath(library.resolve(stageFunction(f).file)), f));
+        EXPECT_EQ(r.stubNotes, expected) << e.path();
+        for (const auto& n : r.stubNotes)
+            if (std::find(all.begin(), all.end(), n) == all.end()) all.push_back(n);
+    }
+    EXPECT_EQ(all.size(), kStageFunctions.size()) << testing::PrintToString(all);
+    const Scene penumbra = loadScene(test::scenePath("penumbra"));
+    EXPECT_EQ(functionsRun(planPasses(penumbra)).size(), 6u);  // all but the Gaussian
+}
+
+// One stub among solved stages is named, and only it: the survey probes each function alone.
+TEST(StudentStubs, AStubAmongSolvedStagesIsNamedAlone) {
+    if (!fs::exists(test::root() / "reference")) GTEST_SKIP() << "needs reference/";
+    test::sharedContext();
+    const fs::path dir = test::tempDir("stub_kernel_alone");
+    std::string lookup = test::readFile(test::root() / "reference/sat_lookup.glsl");
+    const size_t at = lookup.find('{', lookup.find("float satKernelTexels(sampler2D"));
+    lookup.insert(at + 1, "\n    return -1.0;\n");
+    test::writeFile(dir / "sat_lookup.glsl", lookup);
+    const ShaderLibrary library =
+        ShaderLibrary::mixed(test::root() / "reference", {{"sat_lookup.glsl", dir}}, test::root());
+    EXPECT_EQ(stubFunctions(library, functionsRun(planPasses(loadScene(test::scenePath("penumbra"))))),
+              std::vector<StageFunction>{StageFunction::SatKernelTexels});
+    // The three SAT functions stubbed under solved moments and msm: all three named.
+    const ShaderLibrary sat = ShaderLibrary::mixed(
+        test::root() / "reference",
+        {{"sat.comp", test::root() / "student"}, {"sat_lookup.glsl", test::root() / "student"}}, test::root());
+    EXPECT_EQ(stubFunctions(sat, functionsRun(planPasses(loadScene(test::scenePath("penumbra"))))),
+              (std::vector<StageFunction>{StageFunction::SatPass, StageFunction::SatBoxAverage,
+                                          StageFunction::SatKernelTexels}));
+    EXPECT_TRUE(stubFunctions(test::library("reference"), std::vector<StageFunction>(
+        {StageFunction::RelativeDepth, StageFunction::ComputeMoments, StageFunction::GaussianPass,
+         StageFunction::SatPass, StageFunction::SatBoxAverage, StageFunction::SatKernelTexels,
+         StageFunction::MomentShadowIntensity})).empty());
 }
 
 }  // namespace sl

@@ -127,7 +127,7 @@ std::string msmSweepSummary(const MsmSweepReport& r, const MsmSweepCases& c, con
     std::snprintf(d, sizeof d, "(largest drop %.3g)", r.worstDrop);
     line("monotone in zf (G may drop <= 1e-3)", r.nonMonotone, r.cases - r.vectors, d);
     std::snprintf(d, sizeof d, "(largest G %.3g)", r.worstFront);
-    std::snprintf(buf, sizeof buf, "G <= %g >= 0.01 in front of every occluder", double(std::max(kSweepFrontMax, 3 * alpha)));
+    std::snprintf(buf, sizeof buf, "G <= %g where zf is >= 0.01 in front of every occluder", double(std::max(kSweepFrontMax, 3 * alpha)));
     const std::string front = buf;
     line(front.c_str(), r.frontLeak, r.checkedFront, d);
     std::snprintf(d, sizeof d, "(furthest outside %.3g)", std::max(0.0, r.worstCantelli));

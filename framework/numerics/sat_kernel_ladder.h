@@ -27,6 +27,24 @@ inline glm::ivec2 satKernelCellTexel(int x, int y, int cells, int mapSize) {
     return {x * step + step / 2, y * step + step / 2};
 }
 
+// The widths as a picture: each divided by `largest` (the reference's widest), R the lit
+// surface's, G the far receiver's (a PNG of the widths themselves, 1 to 64, is white).
+inline Image satKernelPreview(const Image& widths, float largest) {
+    Image p(widths.width, widths.height, 3);
+    const float scale = largest > 0.0f ? 1.0f / largest : 1.0f;
+    for (size_t i = 0, n = size_t(widths.width) * widths.height; i < n; ++i)
+        for (int c = 0; c < 2 && c < widths.channels; ++c)
+            p.pixels[i * 3 + c] = widths.pixels[i * widths.channels + c] * scale;
+    return p;
+}
+
+// The widest width of a kernel image (its preview's scale).
+inline float satKernelLargest(const Image& widths) {
+    float m = 0.0f;
+    for (float w : widths.pixels) m = w > m ? w : m;
+    return m;
+}
+
 // satKernelTexels of `library` over `rawMoments` (the light's moment map, as the shadow pass
 // stores it) for the scene's first shadowing light, on a grid of at most 128 × 128 cells.
 Image satKernelLadder(const ShaderLibrary& library, const Scene& scene, const Image& rawMoments);

@@ -70,7 +70,9 @@ void writeGolden(const Image& pixels, const fs::path& dir, const std::string& sc
     images[image] = nlohmann::json{{"file", scene + "/" + image + ".exr"},
                                    {"sha256", sha256File(exr)},
                                    {"pixels_sha256", sha256Pixels(stored)}};
-    writePngPreview(previewImage(stored), png, isImage(image, ImageKind::Final));
+    writePngPreview(image == kSatKernelImage ? satKernelPreview(stored, satKernelLargest(stored))
+                                             : previewImage(stored),
+                    png, isImage(image, ImageKind::Final));
     previews[image] = nlohmann::json{{"file", scene + "/" + image + ".png"},
                                      {"sha256", sha256File(png)},
                                      {"pixels_sha256", sha256Pixels(readImage(png))}};

@@ -11,6 +11,7 @@
 
 #include "image_io.h"
 #include "results.h"
+#include "sat_kernel_ladder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -154,6 +155,11 @@ void ReportWriter::add(const TestResult& t, const std::string& image, const Imag
     for (char ch : t.scene + "_" + t.stage + "_" + image)
         base += std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' ? ch : '-';
     const bool srgb = isImage(image, ImageKind::Final);
+    if (image == kSatKernelImage && ref.channels == 2) {  // widths in texels: shown over the
+                                                         // reference's widest, as RGB
+        const float largest = satKernelLargest(ref);
+        return add(t, image, satKernelPreview(ref, largest), satKernelPreview(student, largest), c, findings);
+    }
     const int step = stepFor(ref);
     const bool sameSize = student.width == ref.width && student.height == ref.height;
     // Full-size images where something is wrong and the preview is reduced; not where most of
