@@ -30,6 +30,7 @@
 #include <iostream>
 #include <map>
 #include <optional>
+#include <sstream>
 
 namespace sl::grader {
 namespace {
@@ -309,9 +310,13 @@ private:
             if (!run->scoutedBy) continue;
             const auto scout = scouts_.find(*run->scoutedBy);
             if (scout == scouts_.end() || scout->second == k) continue;
-            const auto note = scoutNote(scout->second);
-            if (!note || note->empty()) continue;
             const Job& seenBy = jobs_[scout->second];
+            // A scout speaks only for the functions its scene runs: a per-pixel SAT scene runs
+            // satKernelTexels too, which a fixed-kernel scout never probed, so it renders.
+            if (run->stage == Stage::Sat && perPixelSat(job.scene) && !perPixelSat(seenBy.scene)) return false;
+            auto note = scoutNote(scout->second);
+            if (!note || note->empty()) continue;
+            if (run->stage == Stage::Sat && !perPixelSat(job.scene)) note = withoutKernelLines(*note);
             const GradedScene& seen = scenes_[seenBy.scene];
             const std::string where = seenBy.is(Stage::Robustness) ? std::string("on every hard case")
                                       : seen.hidden ? std::string("everywhere in another scene's render")
@@ -321,6 +326,20 @@ private:
         if (reason.empty()) return false;
         job.notRunReason = reason + "(not rendered: it would show the stub too)\n";
         return true;
+    }
+
+    // A per-pixel scout's note for a fixed-kernel scene: without satKernelTexels, which it never runs.
+    static std::string withoutKernelLines(const std::string& note) {
+        std::istringstream in(note);
+        std::string out;
+        for (std::string line; std::getline(in, line);)
+            if (line.find(": satKernelTexels:") == std::string::npos) out += (out.empty() ? "" : "\n") + line;
+        return out;
+    }
+
+    bool perPixelSat(size_t scene) const {
+        const auto& s = scenes_[scene].scene;
+        return s && s->shadow.filter == FilterKind::Sat && s->shadow.satPerPixel;
     }
 
     std::map<Stage, size_t> scouts_;            // stage -> the job that speaks for it

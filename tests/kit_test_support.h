@@ -102,7 +102,8 @@ inline CommandResult buildKitProgram(const fs::path& kit) {
 //  - `./kit test` where `skipKitTest` (it is the command running this test),
 //  - `./kit deps --check` (it traces a whole build, minutes; .ci/run runs it after the suite),
 //  - `./kit study` (the full study, ~15 minutes; tests/test_study.cpp runs a tiny sweep),
-//  - benchmarks get `--size 64 --repeats 3` (a full-size benchmark is a minute of CPU),
+//  - benchmarks get `--size 64 --repeats 3` (a full-size benchmark is a minute of CPU), and
+//    `bench --exact` also `--lighting-scene none` (its lighting rows are minutes under valgrind),
 //  - `view` runs under xvfb-run (a virtual display; a line may say `xvfb-run -a` itself), and a
 //    time limit closes its window; with --screenshot it ends by itself and must succeed.
 // Returns "" when it passed, else what went wrong (the command, its exit code, its output).
@@ -125,6 +126,9 @@ inline std::string runDocumented(const fs::path& dir, std::string command, bool 
     const bool window = view && command.find("--screenshot") == std::string::npos;
     if (command.find(" bench") != std::string::npos && command.find("--size") == std::string::npos)
         command += " --size 64 --repeats 3";
+    // Under valgrind the lighting rows are minutes; KitBenchLabel runs --exact at the goals' size.
+    if (command.find(" bench --exact") != std::string::npos && command.find("--lighting-scene") == std::string::npos)
+        command += " --lighting-scene none";
     if (view) {
         if (runCommand("command -v xvfb-run").exitCode != 0) {
             if (skipped) *skipped += command + ": skipped (no xvfb-run; ./kit installs xvfb)\n";

@@ -131,6 +131,28 @@ TEST(Grader, StubStagesRenderOnceAndAnImplementedStageIsStillGradedEverywhere) {
     }
 }
 
+// A fixed-kernel scout speaks only for what its scene runs: on the stubs, every per-pixel SAT
+// scene's sat and final tests name satKernelTexels (never probed on contact), and contact's and
+// wide_blur's never do, whichever render ran first.
+TEST(Grader, PerPixelScenesNameTheKernelStubWhateverTheScout) {
+    const fs::path out = test::tempDir("grader_kernel_scout");
+    auto g = test::grade("--submission " + (test::root() / "student").string() +
+                             " --scenes contact,penumbra,sun_penumbra,wide_blur --reference golden --no-report",
+                         out);
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    int checked = 0;
+    for (const auto& t : g.results["tests"]) {
+        const std::string name = t["name"], text = t["output"];
+        const bool sat = name.find(": sat") != std::string::npos, final = name.find(": final") != std::string::npos;
+        if (!sat && !final) continue;
+        const bool perPixel = name.rfind("penumbra", 0) == 0 || name.rfind("sun_penumbra", 0) == 0;
+        EXPECT_EQ(text.find("satKernelTexels") != std::string::npos, perPixel) << name << "\n" << text;
+        EXPECT_NE(text.find("satBoxAverage"), std::string::npos) << name << "\n" << text;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 8) << g.run.output;
+}
+
 TEST(Grader, ResultsJsonIsWrittenEvenWhenTheGraderCannotRun) {
     fs::path out = test::tempDir("grader_failure");
     auto g = test::grade("--scenes no_such_scene --submission " + (test::root() / "reference").string(), out);

@@ -6,6 +6,11 @@
 // could not run) test the wiring; .ci/run runs the real one after the build.
 #include "kit_test_support.h"
 
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace sl {
 namespace {
 
@@ -58,7 +63,7 @@ namespace sl {
 
 // Timing belongs in benchmarks, never in the test run: benchmarks (suites named Bench*) carry the
 // CTest label `bench`; `./kit test` runs `ctest -LE bench` and so never times anything, `./kit
-// bench` runs `ctest -L bench`.
+// bench --exact` runs the Bench* suites on the exact clock (their goals are in instructions).
 TEST(KitBenchLabel, BenchSuitesAreLabelledAndLeftOutOfTheTestRun) {
     // CTest writes Testing/Temporary/LastTest.log even to list tests, and the suite's own log
     // is there while it runs: list from a copy of the build's test files (their includes of
@@ -79,7 +84,55 @@ TEST(KitBenchLabel, BenchSuitesAreLabelledAndLeftOutOfTheTestRun) {
     EXPECT_NE(rest.output.find("KitBenchLabel."), std::string::npos) << rest.output;
     const std::string kit = test::readFile(test::root() / "kit");
     EXPECT_NE(kit.find("-LE bench"), std::string::npos);
-    EXPECT_NE(kit.find("-L bench"), std::string::npos);
+    EXPECT_NE(kit.find("--gtest_filter='Bench*'"), std::string::npos);
+}
+
+namespace {
+// Each table row's pass name and ratio, in order (both solutions' tables).
+std::vector<std::pair<std::string, double>> benchRatios(const std::string& output) {
+    std::vector<std::pair<std::string, double>> rows;
+    std::istringstream in(output);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> cells;
+        std::istringstream cols(line);
+        for (std::string c; std::getline(cols, c, '|');) cells.push_back(c);
+        if (line.rfind("| ", 0) != 0 || cells.size() < 5 || line.find("| pass |") == 0) continue;
+        rows.emplace_back(cells[1], std::stod(cells[4]));
+    }
+    return rows;
+}
+}  // namespace
+
+// `./kit bench --exact` counts instructions (valgrind, tools/cost_exact.sh): at the goals' size
+// the reference meets every goal (✓), the stubs say "not implemented"; at another size the goals
+// are shown, not checked; and the count hardly moves between two runs.
+TEST(KitBenchLabel, ExactBenchChecksTheGoalsInInstructions) {
+    if (test::runCommand("command -v valgrind").exitCode != 0) GTEST_SKIP() << "no valgrind (./kit installs it)";
+    const std::string kit = "cd '" + test::root().string() + "' && SHADOWLAB_BUILD='" + test::buildDir().string() +
+                            "' ./kit bench --exact ";
+    const auto goals = test::runCommand(kit + "--lighting-scene none 2>&1");  // 256², 3 repeats
+    ASSERT_EQ(goals.exitCode, 0) << goals.output;
+    EXPECT_NE(goals.output.find("cost: million instructions"), std::string::npos) << goals.output;
+    EXPECT_NE(goals.output.find("256² RGBA32F, 3 interleaved repeats"), std::string::npos) << goals.output;
+    for (const char* pass : {"gaussian r=8, x", "gaussian r=8, y", "gaussian r=16, x", "sat, rows + columns"})
+        EXPECT_NE(goals.output.find(std::string("| ") + pass + " |"), std::string::npos) << pass;
+    EXPECT_EQ(goals.output.find("✗"), std::string::npos) << goals.output;  // the reference meets its goals
+    EXPECT_NE(goals.output.find("✓ ≤ 2.0"), std::string::npos) << goals.output;
+    EXPECT_EQ(goals.output.find("(--exact)"), std::string::npos) << goals.output;  // checked, not shown
+    EXPECT_NE(goals.output.find("not implemented"), std::string::npos) << goals.output;  // student/'s stubs
+
+    const std::string small = kit + "--size 32 --repeats 3 --lighting-scene none 2>&1";
+    const auto a = test::runCommand(small), b = test::runCommand(small);
+    ASSERT_EQ(a.exitCode, 0) << a.output;
+    EXPECT_NE(a.output.find("in instructions (--exact)"), std::string::npos) << a.output;
+    EXPECT_NE(a.output.find("hold for 256² maps"), std::string::npos) << a.output;
+    const auto ra = benchRatios(a.output), rb = benchRatios(b.output);
+    ASSERT_EQ(ra.size(), rb.size()) << b.output;
+    EXPECT_GE(ra.size(), 18u) << a.output;
+    for (size_t i = 0; i < ra.size(); ++i) {
+        EXPECT_EQ(ra[i].first, rb[i].first);
+        EXPECT_NEAR(ra[i].second, rb[i].second, 0.01 * ra[i].second) << ra[i].first << ": the exact clock moved";
+    }
 }
 
 }  // namespace sl

@@ -103,6 +103,8 @@ double costEnd() {
     return readDump();
 }
 
+bool costCountsInstructions() { return exactClock() == "instructions"; }
+
 std::string costMethod() {
     const char* threads = std::getenv("LP_NUM_THREADS");
     const std::string n = threads && *threads

@@ -33,4 +33,8 @@ double costEnd();
 // (llvmpipe's CPU time grows with the threads it keeps busy, so figures compare at one count).
 std::string costMethod();
 
+// True under tools/cost_exact.sh without --cycles: costs are instructions, the clock the
+// bench's goals are stated on.
+bool costCountsInstructions();
+
 }  // namespace sl

@@ -49,7 +49,7 @@ bool holdsStubValue(const Image& img) {
 // A row from per-repeat times of a pass and of its baseline (same repeats, interleaved).
 BenchRow makeRow(std::string name, const std::vector<double>& ms,
                  const std::vector<double>& baselineMs, double baselineCount,
-                 std::string baseline, double goal, bool implemented) {
+                 std::string baseline, double goal, bool implemented, bool goalSize) {
     std::vector<double> ratios;
     for (size_t i = 0; i < ms.size(); ++i) ratios.push_back(ms[i] / (baselineCount * baselineMs[i]));
     BenchRow row;
@@ -62,6 +62,7 @@ BenchRow makeRow(std::string name, const std::vector<double>& ms,
     row.ratioMin = *std::min_element(ratios.begin(), ratios.end());
     row.ratioMax = *std::max_element(ratios.begin(), ratios.end());
     row.goal = goal;
+    row.goalChecked = costCountsInstructions() && goalSize;
     row.implemented = implemented;
     row.baseline = std::move(baseline);
     return row;
@@ -94,10 +95,13 @@ private:
     int texels_;
 };
 
-// The goals of docs/performance.md, per pass (ratios to copy passes).
-double gaussianGoal(int radius) { return radius == 8 ? 1.3 : radius == 16 ? 2.0 : 0.0; }
-constexpr double kSatGoal = 1.5;          // both passes vs two copy passes
-constexpr double kSatLightingGoal = 1.2;  // lighting with SAT lookup vs bilinear fetch
+// The goals of docs/performance.md, per pass: ratios of instructions (the exact clock, which
+// no load moves), each the reference's own figure with Mesa 22.3.6 plus ~7 %: "as lean as the
+// reference". A CPU-time ratio is not the same figure (llvmpipe's threads, caches and the
+// host's load move it), so on the CPU clock a goal is shown, not checked.
+double gaussianGoal(int radius) { return radius == 8 ? 2.0 : radius == 16 ? 2.7 : 0.0; }
+constexpr double kSatGoal = 2.6;          // both passes vs two copy passes
+constexpr double kSatLightingGoal = 3.4;  // lighting with SAT lookup vs bilinear fetch
 // Copy passes further apart than this (slowest / fastest repeat) mark a busy machine (a busy
 // Zen 3, 2026-12-01: 7.23-16.53 ms in one run of 21, ratios 1.5x those of a quiet day).
 constexpr double kBusyCopySpread = 1.5;
@@ -153,14 +157,14 @@ std::vector<BenchRow> benchSatLighting(Renderer& r, const std::string& scenePath
         std::snprintf(name, sizeof name, "sat lookup, box %g, lighting pass (%s)",
                       double(kSatBoxes[b]), sat.name.c_str());
         rows.push_back(makeRow(name, boxMs[b], bilinearMs, 1, "bilinear fetch", kSatLightingGoal,
-                               implemented));
+                               implemented, true));
     }
     char name[160], baseline[64];
     std::snprintf(name, sizeof name, "sat lookup, box %g / box %g, lighting pass",
                   double(kSatBoxes[boxes.size() - 1]), double(kSatBoxes[0]));
     std::snprintf(baseline, sizeof baseline, "sat lookup, box %g", double(kSatBoxes[0]));
     rows.push_back(makeRow(name, boxMs.back(), boxMs.front(), 1, baseline, kSatFlatGoal,
-                           implemented));
+                           implemented, true));
     return rows;
 }
 
@@ -171,6 +175,7 @@ std::string benchVerdict(const BenchRow& row) {
     if (row.goal <= 0) return "";
     char goal[32];
     std::snprintf(goal, sizeof goal, "%.1f", row.goal);
+    if (!row.goalChecked) return std::string("≤ ") + goal + " in instructions (--exact)";
     return row.ratio <= row.goal ? std::string("✓ ≤ ") + goal : std::string("✗ > ") + goal;
 }
 
@@ -245,7 +250,8 @@ BenchReport runFilterBenchmark(Renderer& r, const BenchOptions& options) {
     auto addRow = [&](std::string name, const std::vector<double>& ms, int copies, double goal,
                       bool implemented) {
         BenchRow row = makeRow(std::move(name), ms, copyMs, copies,
-                               copies == 1 ? "copy" : "2 copies", goal, implemented);
+                               copies == 1 ? "copy" : "2 copies", goal, implemented,
+                               size == kBenchGoalSize);
         addTileRatio(row, tileMs, copies);
         report.rows.push_back(std::move(row));
     };
@@ -267,7 +273,7 @@ std::string formatBenchReport(const BenchReport& report) {
                   "cost: %s\n"
                   "%d² RGBA32F, %d interleaved repeats; ratio = median pass / median baseline, "
                   "spread = min–max over repeats of pass / baseline of the same repeat, "
-                  "goal: docs/performance.md's, on the ratio;\n"
+                  "goal: docs/performance.md's, on the ratio of instructions;\n"
                   "tiled = median pass / median of as many passes of the %d-texel copy "
                   "(the floor of moving the texels)\n\n",
                   report.method.c_str(), report.size, report.repeats, report.tileCopyTexels);
@@ -283,6 +289,18 @@ std::string formatBenchReport(const BenchReport& report) {
         std::snprintf(line, sizeof line, "| %s | %.2f | %s | %.2f | %.2f–%.2f | %s | %s |\n",
                       row.name.c_str(), row.medianMs, row.baseline.c_str(), row.ratio,
                       row.ratioMin, row.ratioMax, benchVerdict(row).c_str(), tiled);
+        out += line;
+    }
+    if (!costCountsInstructions())
+        out += "\nthe goals are ratios of instructions, the reference's own plus ~7 %: checked by "
+               "`./kit bench --exact` (tools/cost_exact.sh, valgrind), which gives the same figure on "
+               "any machine; a CPU-time ratio is another figure, and the machine's load moves it\n";
+    else if (report.size != kBenchGoalSize) {
+        std::snprintf(line, sizeof line,
+                      "\nthe goals of the copy-measured rows hold for %d² maps (`./kit bench --exact` "
+                      "without --size): at %d² a pass's fixed cost per dispatch weighs differently, "
+                      "so they are shown, not checked\n",
+                      kBenchGoalSize, report.size);
         out += line;
     }
     // The same copy of the same texture, repeated: when its times lie far apart, something else
@@ -313,6 +331,7 @@ std::string benchReportJson(const BenchReport& report) {
                         {"ratioMin", row.ratioMin},
                         {"ratioMax", row.ratioMax},
                         {"goal", row.goal},
+                        {"goalChecked", row.goalChecked},
                         {"implemented", row.implemented},
                         {"verdict", benchVerdict(row)},
                         {"tileBaselineMs", tiled(row.tileBaselineMs)},
