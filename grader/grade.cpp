@@ -16,6 +16,7 @@
 #include "scene_list.h"
 #include "score_render.h"
 #include "shader_source.h"
+#include "stub_scouts.h"
 #include "worker.h"
 
 #include "image_io.h"
@@ -30,7 +31,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <sstream>
 
 namespace sl::grader {
 namespace {
@@ -254,13 +254,7 @@ private:
         if (report_) report_->finish(s);
     }
 
-    // Scouts: a stub stage's output is -1 on every scene, so once one render of a stage shows
-    // the stub everywhere, its renders of the other scenes, and the finals that use it, are not
-    // run: they would score 0 as "not implemented" all the same. A student's first `./kit check`
-    // on the stubs renders 5 of 25 tests. The scouts run first: the robustness test speaks for
-    // msm.glsl (-1 on every hard case), the first moments, gaussian and sat renders for their
-    // stages (stubEverywhere in worker.json: computeMoments -1 on every rung of the depth
-    // ladder, a filter's whole output -1). Any other outcome of a scout renders everything.
+    // The scouts (stub_scouts.h) first, the robustness test (short) before the others.
     std::vector<size_t> scoutsFirst(const std::vector<size_t>& order) {
         std::vector<size_t> first, rest;
         for (size_t k : order) {
@@ -288,17 +282,7 @@ private:
                 return j.ran ? std::optional<std::string>("") : std::nullopt;
             return std::nullopt;  // still being written: ask again at the next start
         }
-        std::string note;
-        if (j.is(Stage::Robustness) ? !w->stubNotes.empty() : w->stubEverywhere) {
-            for (const auto& f : j.row->files) note += (note.empty() ? "submission/" : " + ") + f;
-            note += ": not implemented yet (its output is the stub value -1)";
-            std::string named;  // every note of the stage's files: each function by name
-            for (const auto& n : w->stubNotes)
-                if (std::find(j.row->files.begin(), j.row->files.end(), n.file) != j.row->files.end())
-                    named += (named.empty() ? "" : "\n") + n.text;
-            if (!named.empty()) note = named;
-        }
-        return scoutNote_[scout] = note;
+        return scoutNote_[scout] = scoutStubNote(*j.row, j.is(Stage::Robustness), *w);
     }
 
     // skipIf of job k: true (with the reason in notRunReason) if a scout showed a stage it
@@ -311,30 +295,15 @@ private:
             const auto scout = scouts_.find(*run->scoutedBy);
             if (scout == scouts_.end() || scout->second == k) continue;
             const Job& seenBy = jobs_[scout->second];
-            // A scout speaks only for the functions its scene runs: a per-pixel SAT scene runs
-            // satKernelTexels too, which a fixed-kernel scout never probed, so it renders.
-            if (run->stage == Stage::Sat && perPixelSat(job.scene) && !perPixelSat(seenBy.scene)) return false;
-            auto note = scoutNote(scout->second);
+            if (!scoutSpeaksFor(run->stage, perPixelSat(seenBy.scene), perPixelSat(job.scene))) return false;
+            const auto note = scoutNote(scout->second);
             if (!note || note->empty()) continue;
-            if (run->stage == Stage::Sat && !perPixelSat(job.scene)) note = withoutKernelLines(*note);
-            const GradedScene& seen = scenes_[seenBy.scene];
-            const std::string where = seenBy.is(Stage::Robustness) ? std::string("on every hard case")
-                                      : seen.hidden ? std::string("everywhere in another scene's render")
-                                                    : "everywhere in the render of " + seen.name;
-            reason += *note + "; " + where + "\n";
+            reason += spareReason(*note, run->stage, perPixelSat(job.scene), seenBy.is(Stage::Robustness),
+                                  scenes_[seenBy.scene]);
         }
         if (reason.empty()) return false;
         job.notRunReason = reason + "(not rendered: it would show the stub too)\n";
         return true;
-    }
-
-    // A per-pixel scout's note for a fixed-kernel scene: without satKernelTexels, which it never runs.
-    static std::string withoutKernelLines(const std::string& note) {
-        std::istringstream in(note);
-        std::string out;
-        for (std::string line; std::getline(in, line);)
-            if (line.find(": satKernelTexels:") == std::string::npos) out += (out.empty() ? "" : "\n") + line;
-        return out;
     }
 
     bool perPixelSat(size_t scene) const {

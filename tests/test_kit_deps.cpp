@@ -131,7 +131,8 @@ TEST(KitBenchLabel, ExactBenchChecksTheGoalsInInstructions) {
     EXPECT_GE(ra.size(), 18u) << a.output;
     for (size_t i = 0; i < ra.size(); ++i) {
         EXPECT_EQ(ra[i].first, rb[i].first);
-        EXPECT_NEAR(ra[i].second, rb[i].second, 0.01 * ra[i].second) << ra[i].first << ": the exact clock moved";
+        // 1 % of the count, plus the table's printing to hundredths (0.865 prints either way).
+        EXPECT_NEAR(ra[i].second, rb[i].second, 0.01 * ra[i].second + 0.0101) << ra[i].first << ": the exact clock moved";
     }
 }
 

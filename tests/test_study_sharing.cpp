@@ -122,7 +122,7 @@ TEST(StudySharingKey, EqualKeysRenderEqualRawMaps) {
                 EXPECT_TRUE(it->second.second.pixels == raw.pixels)
                     << setting << " and " << it->second.first << " have one key (" << key.label
                     << ") but different raw maps: the shadow pass reads something the key "
-                       "(framework/truth/raw_map_key.cpp) does not";
+                       "(framework/study/raw_map_key.cpp) does not";
             }
     }
     EXPECT_GT(compared, 20) << "too few settings shared a key to test anything";

@@ -2,8 +2,8 @@
 // shadow pass would draw the same texels: the same scene and light, the same map size and
 // format, the same shadow-pass program and the same values of the uniforms that program reads.
 // The key says exactly that, and errs on the side of not sharing:
-//   - the program is the shadow pass's own (scene.vert + shadows_moments.frag for msm4's
-//     student stages, + techniques/store.frag for the others; see render/pass_programs.cpp),
+//   - the program is the shadow pass's own (scene.vert + techniques/store.frag, with the
+//     solution's moments.glsl where the row stores moments; see render/pass_programs.cpp),
 //     assembled by the ShaderLibrary with the plan's defines; its text is reduced to the lines
 //     the preprocessor may compile (a `#ifdef SL_FILTER_SAT` in a block the pass never
 //     compiles does not split it), and every define and technique parameter whose name that

@@ -52,6 +52,10 @@ struct StudyRow {
     std::string key() const;   // identifies the combination (resume)
 };
 
+// A number as the study's CSV, data files and pages print it (a printf format; the CSV's and
+// the plots' data keep six significant digits, the report's tables fewer).
+std::string formatNumber(double v, const char* format = "%.6g");
+
 const std::string& studyCsvHeader();
 std::string toCsvLine(const StudyRow& row);
 // Reads a study CSV; throws std::runtime_error naming the file and line of a malformed row.

@@ -8,12 +8,6 @@
 namespace sl {
 namespace {
 
-std::string pickFmt(double v, const char* f) {
-    char b[48];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
-
 // The row minimising `key` among those within `slack` of the lowest RMSE (ties: lower RMSE).
 template <class Key>
 const StudyRow* cheapestWithin(const std::vector<const StudyRow*>& rows, double bestRmse,
@@ -58,9 +52,9 @@ std::string pickMarkdown(const std::vector<Pick>& picks) {
     std::string s;
     for (const Pick& p : picks) {
         const StudyRow& r = *p.row;
-        s += "| " + r.scene + " | " + (r.lightSize > 0 ? pickFmt(r.lightSize, "%g disk") : "point") +
-             " | " + p.question + " | " + pickConfiguration(r) + " | " + pickFmt(r.truth.rmse, "%.4f") +
-             " | " + pickFmt(r.frameRatio, "%.2f") + " | " + std::to_string(r.mapBytes) + " |\n";
+        s += "| " + r.scene + " | " + (r.lightSize > 0 ? formatNumber(r.lightSize, "%g disk") : "point") +
+             " | " + p.question + " | " + pickConfiguration(r) + " | " + formatNumber(r.truth.rmse, "%.4f") +
+             " | " + formatNumber(r.frameRatio, "%.2f") + " | " + std::to_string(r.mapBytes) + " |\n";
     }
     return s;
 }

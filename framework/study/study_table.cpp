@@ -23,12 +23,6 @@ const std::vector<std::string>& columns() {
     return c;
 }
 
-std::string csvNumber(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.6g", v);
-    return b;
-}
-
 // Fields never hold commas or quotes except free text, which is quoted.
 std::string quoted(const std::string& s) {
     std::string q = "\"";
@@ -60,14 +54,20 @@ std::vector<std::string> splitCsv(const std::string& line) {
 }
 
 void errorFields(std::vector<std::string>& f, const ShadowError& e) {
-    for (double v : {e.rmse, e.max, e.p99, e.over005, e.leakArea, e.darkArea}) f.push_back(csvNumber(v));
+    for (double v : {e.rmse, e.max, e.p99, e.over005, e.leakArea, e.darkArea}) f.push_back(formatNumber(v));
 }
 
 }  // namespace
 
 std::string StudyRow::key() const {
     return scene + "|" + solution + "|" + spec + "|" + filter + "|" + std::to_string(radius) +
-           "|" + std::to_string(mapSize) + "|light " + csvNumber(lightSize);
+           "|" + std::to_string(mapSize) + "|light " + formatNumber(lightSize);
+}
+
+std::string formatNumber(double v, const char* format) {
+    char b[40];
+    std::snprintf(b, sizeof b, format, v);
+    return b;
 }
 
 const std::string& studyCsvHeader() {
@@ -81,21 +81,21 @@ const std::string& studyCsvHeader() {
 
 std::string toCsvLine(const StudyRow& r) {
     std::vector<std::string> f = {r.scene, r.solution, r.technique, quoted(r.spec), r.filter,
-                                  std::to_string(r.radius), csvNumber(r.kernelTexels),
-                                  std::to_string(r.mapSize), csvNumber(r.lightSize),
+                                  std::to_string(r.radius), formatNumber(r.kernelTexels),
+                                  std::to_string(r.mapSize), formatNumber(r.lightSize),
                                   std::to_string(r.bits), quoted(r.parameters),
                                   std::to_string(r.mapBytes), std::to_string(r.planBytes),
-                                  std::to_string(r.repeats), csvNumber(r.frameMin),
-                                  csvNumber(r.frameMedian), csvNumber(r.frameMax),
-                                  csvNumber(r.frameWallMedian), quoted(r.passTimes),
-                                  csvNumber(r.copyMillis), csvNumber(r.frameRatio),
+                                  std::to_string(r.repeats), formatNumber(r.frameMin),
+                                  formatNumber(r.frameMedian), formatNumber(r.frameMax),
+                                  formatNumber(r.frameWallMedian), quoted(r.passTimes),
+                                  formatNumber(r.copyMillis), formatNumber(r.frameRatio),
                                   quoted(r.costMethod)};
     errorFields(f, r.truth);
     errorFields(f, r.filtered);
     f.push_back(std::to_string(r.truth.pixels));
     f.push_back(std::to_string(r.flickerFrames));
-    f.push_back(csvNumber(r.flicker));
-    f.push_back(csvNumber(r.flickerTruth));
+    f.push_back(formatNumber(r.flicker));
+    f.push_back(formatNumber(r.flickerTruth));
     f.push_back(quoted(r.reused));
     f.push_back(quoted(r.mapKey));
     f.push_back(quoted(r.mapFrom));

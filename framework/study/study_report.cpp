@@ -18,11 +18,8 @@
 namespace sl {
 namespace {
 
-std::string num(double v, const char* f = "%.4g") {
-    char b[40];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
+// The report's tables: four significant digits.
+constexpr const char* kTableDigits = "%.4g";
 
 std::string label(const StudyRow& r) {
     return r.filter + (r.radius ? " r" + std::to_string(r.radius) : "") + " " +
@@ -42,8 +39,8 @@ void writeDat(const fs::path& p, const std::vector<const StudyRow*>& rows) {
     std::ofstream out(p);
     out << "# frame_over_copy truth_rmse map_bytes marker_size colour label\n";
     for (const StudyRow* r : rows)
-        out << num(r->frameRatio, "%.6g") << " " << num(plotY(r->truth.rmse), "%.6g") << " "
-            << r->mapBytes << " " << num(markerSize(r->mapSize), "%.3f") << " "
+        out << formatNumber(r->frameRatio, "%.6g") << " " << formatNumber(plotY(r->truth.rmse), "%.6g") << " "
+            << r->mapBytes << " " << formatNumber(markerSize(r->mapSize), "%.3f") << " "
             << std::stol(kernelColour(r->filter, r->radius).substr(1), nullptr, 16) << " \""
             << label(*r) << "\"\n";
 }
@@ -84,7 +81,7 @@ const StudyRow* mostAccurate(const std::vector<const StudyRow*>& rows, double li
 }
 
 std::string truthImage(const fs::path& dir, double lightSize) {
-    const std::string own = "truth/light_" + num(lightSize, "%g") + "/truth.png";
+    const std::string own = "truth/light_" + formatNumber(lightSize, "%g") + "/truth.png";
     return fs::exists(dir / own) ? own : "truth/truth.png";
 }
 
@@ -131,8 +128,8 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         bySpec[r.spec].push_back(&r);
     }
     for (double lightSize : lightSizes) {
-        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + num(lightSize, "%g"), {}, {}, {}, false};
-        const fs::path plots = dir / (sets.empty() ? "plots" : "plots_light_" + num(lightSize, "%g"));
+        PlotSet set{lightSize, sets.empty() ? "pareto" : "pareto_light_" + formatNumber(lightSize, "%g"), {}, {}, {}, false};
+        const fs::path plots = dir / (sets.empty() ? "plots" : "plots_light_" + formatNumber(lightSize, "%g"));
         fs::create_directories(plots);
         std::vector<const StudyRow*> all;
         std::string names;
@@ -153,7 +150,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         writeDat(plots / "front.dat", set.timeFront);
         writeDat(plots / "front_bytes.dat", front(all, true));
         const std::string setTitle = title + (lightSizes.size() > 1 || lightSize > 0
-                                                  ? ", light size " + num(lightSize, "%g")
+                                                  ? ", light size " + formatNumber(lightSize, "%g")
                                                   : "");
         // The legend's map sizes and kernels, and a y range fitted to the data.
         std::vector<int> sizes;
@@ -180,11 +177,11 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         runGnuplot("dir='" + plots.string() + "'; out='" + (dir / set.name).string() + "'; names='" +
                        names + "'; title='" + setTitle + "'; sizes='" + sizeWords + "'; kernels='" +
                        kernelWords + "'; kcolours='" + colourWords + "'; ymin=" +
-                       num(ymin / 1.12, "%.6g") + "; ymax=" + num(ymax * 1.12, "%.6g"),
+                       formatNumber(ymin / 1.12, "%.6g") + "; ymax=" + formatNumber(ymax * 1.12, "%.6g"),
                    "study_plots.gp", plots / "gnuplot.log");
         log << "wrote " << (dir / set.name).string() << ".{svg,png}, " << set.name << "_bytes.{svg,png}\n";
         // Cost against kernel radius and per pass (study_figures.h).
-        set.costName = sets.empty() ? "" : "_light_" + num(lightSize, "%g");
+        set.costName = sets.empty() ? "" : "_light_" + formatNumber(lightSize, "%g");
         const std::string kvars = writeKernelAndPassData(plots, all);
         runGnuplot(kvars + "; dir='" + plots.string() + "'; out='" +
                        (dir / ("kernel_cost" + set.costName)).string() + "'; bars='" +
@@ -215,7 +212,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
             "Every figure here is drawn from <a href=\"study.csv\">study.csv</a>.</p>\n"
             ;
     for (const PlotSet& set : sets) {
-        page << "<h2>Light size " << num(set.lightSize, "%g")
+        page << "<h2>Light size " << formatNumber(set.lightSize, "%g")
              << (set.lightSize > 0 ? " (area light: soft truth)" : " (point light: hard truth)")
              << "</h2>\n<img src=\"" << set.name << ".svg\" alt=\"error against cost\" width=\"900\">\n"
              << "<img src=\"" << set.name << "_bytes.svg\" alt=\"error against map bytes\" width=\"900\">\n"
@@ -225,16 +222,16 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         for (const StudyRow* r : set.timeFront)
             page << "<tr><td class=l>" << html(r->spec) << "</td><td class=l>" << r->filter << "</td><td>"
                  << r->radius << "</td><td>" << r->mapSize << "²</td><td>" << r->mapBytes << "</td><td>"
-                 << num(r->frameRatio, "%.2f") << "</td><td>" << num(r->truth.rmse) << "</td><td>"
-                 << num(r->truth.p99) << "</td><td>" << num(r->filtered.rmse) << "</td><td>"
-                 << num(r->truth.leakArea) << "</td></tr>\n";
+                 << formatNumber(r->frameRatio, "%.2f") << "</td><td>" << formatNumber(r->truth.rmse, kTableDigits) << "</td><td>"
+                 << formatNumber(r->truth.p99, kTableDigits) << "</td><td>" << formatNumber(r->filtered.rmse, kTableDigits) << "</td><td>"
+                 << formatNumber(r->truth.leakArea, kTableDigits) << "</td></tr>\n";
         page << "</table>\n<h3>Which configuration to pick (from the table above)</h3>\n<table><tr>"
                 "<th>question</th><th>configuration</th><th>RMSE truth</th><th>frame/copy</th>"
                 "<th>map bytes</th></tr>\n";
         for (const Pick& p : set.picks)
             page << "<tr><td class=l>" << html(p.question) << "</td><td class=l>"
-                 << html(pickConfiguration(*p.row)) << "</td><td>" << num(p.row->truth.rmse)
-                 << "</td><td>" << num(p.row->frameRatio, "%.2f") << "</td><td>" << p.row->mapBytes
+                 << html(pickConfiguration(*p.row)) << "</td><td>" << formatNumber(p.row->truth.rmse, kTableDigits)
+                 << "</td><td>" << formatNumber(p.row->frameRatio, "%.2f") << "</td><td>" << p.row->mapBytes
                  << "</td></tr>\n";
         page << "</table>\n<h3>Where the cost goes</h3>\n<img src=\"kernel_cost" << set.costName
              << ".svg\" alt=\"cost against kernel radius\" width=\"900\">\n<img src=\"pass_cost"
@@ -259,12 +256,12 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         const StudyRow* best = mostAccurate(bySpec[spec], lightSize);
         if (!best) continue;
         const auto crops = writeFailureCrops(dir, *best, truthImage(dir, lightSize),
-                                             slugOf(spec) + "_light" + num(lightSize, "%g"));
+                                             slugOf(spec) + "_light" + formatNumber(lightSize, "%g"));
         for (const FailureCrop& c : crops)
             page << "<figure><img style=\"width:auto\" src=\"" << c.file << "\" alt=\"" << c.kind
                  << "\"><figcaption>" << html(spec) << ", " << html(label(*best)) << ", light "
-                 << num(lightSize, "%g") << ": " << (c.kind == "leak" ? "light leaking" : "too dark")
-                 << ", mean |ΔG| " << num(c.meanError, "%.2f") << " at (" << c.x << ", " << c.y
+                 << formatNumber(lightSize, "%g") << ": " << (c.kind == "leak" ? "light leaking" : "too dark")
+                 << ", mean |ΔG| " << formatNumber(c.meanError, "%.2f") << " at (" << c.x << ", " << c.y
                  << ")</figcaption></figure>\n";
     }
     page << "<h2>Per technique: its most accurate configuration</h2>\n";
@@ -273,9 +270,9 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
         const StudyRow* best = mostAccurate(bySpec[spec], lightSize);
         if (!best) continue;
         page << "<h3>" << html(spec) << " — " << html(label(*best)) << ", light size "
-             << num(lightSize, "%g") << ": RMSE "
-             << num(best->truth.rmse) << " (truth), " << num(best->filtered.rmse)
-             << " (filtered truth), frame/copy " << num(best->frameRatio, "%.2f") << "</h3>\n"
+             << formatNumber(lightSize, "%g") << ": RMSE "
+             << formatNumber(best->truth.rmse, kTableDigits) << " (truth), " << formatNumber(best->filtered.rmse, kTableDigits)
+             << " (filtered truth), frame/copy " << formatNumber(best->frameRatio, "%.2f") << "</h3>\n"
              << "<figure><img src=\"" << best->image << "\" alt=\"G\"><figcaption>G, " << html(spec)
              << "</figcaption></figure><figure><img src=\"" << best->errorMap
              << "\" alt=\"error\"><figcaption>G − truth (red: leaks, blue: too dark)</figcaption>"
@@ -287,10 +284,10 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
             "</th><th>reused</th></tr>\n";
     for (const StudyRow& r : rows)
         page << "<tr><td class=l>" << html(r.spec) << "</td><td class=l>" << r.filter << "</td><td>"
-             << r.radius << "</td><td>" << r.mapSize << "²</td><td>" << num(r.lightSize, "%g")
-             << "</td><td>" << num(r.frameMin, "%.2f") << " / " << num(r.frameMedian, "%.2f")
-             << " / " << num(r.frameMax, "%.2f") << "</td><td>" << num(r.frameRatio, "%.2f") << "</td><td>" << num(r.truth.rmse)
-             << "</td><td>" << num(r.truth.max) << "</td><td>" << num(r.filtered.rmse)
+             << r.radius << "</td><td>" << r.mapSize << "²</td><td>" << formatNumber(r.lightSize, "%g")
+             << "</td><td>" << formatNumber(r.frameMin, "%.2f") << " / " << formatNumber(r.frameMedian, "%.2f")
+             << " / " << formatNumber(r.frameMax, "%.2f") << "</td><td>" << formatNumber(r.frameRatio, "%.2f") << "</td><td>" << formatNumber(r.truth.rmse, kTableDigits)
+             << "</td><td>" << formatNumber(r.truth.max, kTableDigits) << "</td><td>" << formatNumber(r.filtered.rmse, kTableDigits)
              << "</td><td class=l>" << html(r.reused) << "</td></tr>\n";
     page << "</table>\n</body></html>\n";
     log << "wrote " << (dir / "index.html").string() << "\n";

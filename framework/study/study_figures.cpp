@@ -9,15 +9,6 @@
 #include <sstream>
 
 namespace sl {
-namespace {
-
-std::string figureFmt(double v, const char* f = "%.6g") {
-    char b[40];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
-
-}  // namespace
 
 double markerSize(int mapSize) {
     return 0.6 + 0.35 * std::max(0.0, std::log2(double(mapSize) / 256.0));
@@ -91,8 +82,8 @@ std::string writeKernelAndPassData(const fs::path& plots, const std::vector<cons
         for (const StudyRow* r : rs) {
             const PassGroups g = passGroups(*r);
             const double copy = r->copyMillis > 0 ? r->copyMillis : 1;
-            out << r->radius << " " << figureFmt(r->frameRatio) << " " << figureFmt(g.filter / copy) << " "
-                << figureFmt(g.lighting / copy) << " " << figureFmt(r->kernelTexels) << "\n";
+            out << r->radius << " " << formatNumber(r->frameRatio) << " " << formatNumber(g.filter / copy) << " "
+                << formatNumber(g.lighting / copy) << " " << formatNumber(r->kernelTexels) << "\n";
         }
         std::string name = key;
         std::replace(name.begin(), name.end(), ' ', ':');  // one word per series
@@ -111,7 +102,7 @@ std::string writeKernelAndPassData(const fs::path& plots, const std::vector<cons
         const PassGroups g = passGroups(*pick);
         const double copy = pick->copyMillis > 0 ? pick->copyMillis : 1;
         bars << "\"" << spec << " " << kernelName(pick->filter, pick->radius) << "\" "
-             << figureFmt(g.shadow / copy) << " " << figureFmt(g.filter / copy) << " " << figureFmt(g.lighting / copy)
+             << formatNumber(g.shadow / copy) << " " << formatNumber(g.filter / copy) << " " << formatNumber(g.lighting / copy)
              << "\n";
     }
     return "kseries='" + names + "'; kmap=" + std::to_string(size);
@@ -137,7 +128,7 @@ std::string writeFlickerData(const fs::path& plots, const std::vector<const Stud
         std::ofstream out(plots / ("flicker_" + std::to_string(++n) + ".dat"));
         out << "# map_size flicker truth_change kernel\n";
         for (const auto& [size, r] : pick[spec])
-            out << size << " " << figureFmt(r->flicker) << " " << figureFmt(r->flickerTruth) << " \""
+            out << size << " " << formatNumber(r->flicker) << " " << formatNumber(r->flickerTruth) << " \""
                 << kernelName(r->filter, r->radius) << "\"\n";
         names += (names.empty() ? "" : " ") + spec;
     }
