@@ -38,6 +38,34 @@ TEST(GraderSeams, TheStageTableNamesEveryStageFileAndKeepsTheReportOrder) {
     EXPECT_EQ(grader::stageRow(grader::Stage::Msm).scoutedBy, grader::Stage::Robustness);
 }
 
+TEST(GraderSeams, EachStageGradesTheImagesOfItsKindsAndAFilterOnlyTheFirstLightsMap) {
+    using grader::gradedImage, grader::stageImage, grader::stageRow, grader::Stage;
+    const auto& moments = stageRow(Stage::Moments);
+    for (const char* n : {"moments_raw", "moments_raw_light1", "moments_raw_cascade2", "moments_raw_depth_ladder"})
+        EXPECT_TRUE(gradedImage(moments, n)) << n;
+    for (const char* n : {"moments_filtered", "final", "msm_shadow", "moments_raw_bogus"})
+        EXPECT_FALSE(stageImage(moments, n)) << n;
+    for (Stage filter : {Stage::Gaussian, Stage::Sat}) {
+        const auto& row = stageRow(filter);
+        EXPECT_TRUE(gradedImage(row, "moments_filtered"));
+        EXPECT_TRUE(gradedImage(row, "moments_filtered_kernel"));
+        // The other lights' and cascades' maps are kept (--keep-work) but not graded.
+        for (const char* n : {"moments_filtered_light1", "moments_filtered_cascade1", "moments_filtered_layer2"}) {
+            EXPECT_TRUE(stageImage(row, n)) << n;
+            EXPECT_FALSE(gradedImage(row, n)) << n;
+        }
+        EXPECT_FALSE(stageImage(row, "sat"));
+        EXPECT_FALSE(stageImage(row, "moments_raw"));
+    }
+    const auto& msm = stageRow(Stage::Msm);
+    EXPECT_TRUE(gradedImage(msm, "shadow"));
+    EXPECT_TRUE(gradedImage(msm, "shadow_overhead"));
+    EXPECT_FALSE(gradedImage(msm, "msm_shadow"));  // the reference's lighting-only render
+    EXPECT_FALSE(gradedImage(msm, "final"));
+    EXPECT_TRUE(gradedImage(stageRow(Stage::Final), "final_overhead"));
+    EXPECT_FALSE(gradedImage(stageRow(Stage::Final), "shadow"));
+}
+
 TEST(GraderSeams, WorkerArgumentsAndResultsCrossInOneEncoding) {
     grader::WorkerArgs a;
     a.scene = "/k/scenes/classic.json";

@@ -263,7 +263,34 @@ TEST(PassPlan, EachPassCarriesItsProgramAndTheRolesItReads) {
     }
     s = sceneWith(FilterKind::None, 1, true);
     s.shadow.technique = techniqueFromName("second-depth");
-    EXPECT_EQ(planPasses(s).passes.back().reads, (Roles{TextureRole::Raw, TextureRole::Second}));
+    const PassPlan peel = planPasses(s);
+    EXPECT_EQ(peel.passes.back().reads, (Roles{TextureRole::Raw, TextureRole::Second}));
+    // The shadow passes bind from roles too: the peel reads the first surface and both draw
+    // with the light's depth buffer; a compute pass has none.
+    ASSERT_EQ(peel.passes[1].kind, PassKind::ShadowSecond);
+    EXPECT_EQ(peel.passes[0].writes, TextureRole::Raw);
+    EXPECT_EQ(peel.passes[0].depth, TextureRole::Depth);
+    EXPECT_EQ(peel.passes[1].reads, Roles{TextureRole::Raw});
+    EXPECT_EQ(peel.passes[1].writes, TextureRole::Second);
+    EXPECT_EQ(peel.passes[1].depth, TextureRole::Depth);
+    EXPECT_FALSE(g.passes[1].depth.has_value());
+    EXPECT_EQ(g.passes[3].depth, TextureRole::CameraDepth);
+}
+
+// --explain shows what each pass compiled and binds, from the plan.
+TEST(PassPlan, ExplainPrintsEachPassesProgramAndRoles) {
+    Scene s = sceneWith(FilterKind::Gaussian, 1, true);
+    const PassPlan plan = planPasses(s);
+    const std::string text = explainPlan(s, plan);
+    EXPECT_NE(text.find("program scene.vert + techniques/store.frag [" + plan.defines.front()),
+              std::string::npos) << text;
+    EXPECT_NE(text.find("; reads -; writes raw, depth"), std::string::npos) << text;
+    EXPECT_NE(text.find("program gaussian_blur.comp [SL_BLUR_RADIUS=" +
+                        std::to_string(plan.effect.gaussianRadius) + "]; reads raw; writes scratch"),
+              std::string::npos) << text;
+    EXPECT_NE(text.find("reads scratch; writes filtered"), std::string::npos) << text;
+    EXPECT_NE(text.find("lighting.frag ["), std::string::npos) << text;
+    EXPECT_NE(text.find("SL_SHADOW_SLOTS=1]; reads filtered; writes color, shadow, camera-depth"), std::string::npos) << text;
 }
 
 TEST(PassPlan, Msm16bitHalvesTheMapOfMsm4) {

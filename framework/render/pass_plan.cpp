@@ -205,8 +205,10 @@ void describePasses(PassPlan& plan) {
                                             ? TextureRole::Wide
                                             : TextureRole::Raw;
         switch (p.kind) {
-            case PassKind::Shadow: p.reads = {}; break;
-            case PassKind::ShadowSecond: p.reads = {TextureRole::Raw}; break;  // the first surface
+            case PassKind::Shadow: p.reads = {}, p.depth = TextureRole::Depth; break;
+            case PassKind::ShadowSecond:  // peels the first surface, which it reads
+                p.reads = {TextureRole::Raw}, p.depth = TextureRole::Depth;
+                break;
             case PassKind::Widen: p.reads = {TextureRole::Raw}; break;
             case PassKind::GaussianX:
             case PassKind::SatRows: p.reads = {filterInput}; break;
@@ -293,11 +295,34 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
         lighting.camera = c;
         lighting.why = why;
         lighting.writes = TextureRole::Color;
+        lighting.depth = TextureRole::CameraDepth;
         plan.passes.push_back(std::move(lighting));
     }
     describePasses(plan);
     return plan;
 }
+
+namespace {
+
+// "      program scene.vert + techniques/store.frag [SL_TECH_MSM4]; reads -; writes raw, depth"
+std::string programAndRoles(const PlannedPass& p) {
+    std::string out = "        program " + p.program.vertexOrCompute;
+    if (!p.program.fragment.empty()) out += " + " + p.program.fragment;
+    if (!p.program.defines.empty()) {
+        out += " [";
+        for (size_t i = 0; i < p.program.defines.size(); ++i) out += (i ? " " : "") + p.program.defines[i];
+        out += "]";
+    }
+    out += "; reads ";
+    if (p.reads.empty()) out += "-";
+    for (size_t i = 0; i < p.reads.size(); ++i) out += std::string(i ? ", " : "") + toString(p.reads[i]);
+    out += std::string("; writes ") + toString(p.writes);
+    if (p.kind == PassKind::Lighting) out += std::string(", ") + toString(TextureRole::Shadow);
+    if (p.depth) out += std::string(", ") + toString(*p.depth);
+    return out + "\n";
+}
+
+}  // namespace
 
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis) {
@@ -347,7 +372,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
             out += line;
             total += (*millis)[i];
         }
-        out += "\n";
+        out += "\n" + programAndRoles(p);
     }
     for (const std::string& why : plan.leftOut) out += "  left out: " + why + "\n";
     char line[96];

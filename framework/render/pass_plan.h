@@ -11,6 +11,7 @@
 #include "technique.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,9 @@ struct PlannedPass {
     // The light's textures the pass reads, in order (lighting: what it samples of every
     // light's maps, in unit order; a map given by the caller stands in for them).
     std::vector<TextureRole> reads;
+    // The depth buffer it draws with: the light's Depth for the shadow passes, the camera's
+    // for lighting (which writes G, the Shadow role, beside its colour); none for a compute pass.
+    std::optional<TextureRole> depth;
     PassProgram program;  // what it runs (passProgramFor)
 };
 
@@ -129,7 +133,8 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options = {});
 bool kernelReachesImage(const ShadowEffect& fx);
 
 // The plan as text: technique and parameters, then one numbered line per pass with the format
-// and memory it writes and why it runs, then what it left out and why; with `millis` (one per
+// and memory it writes and why it runs, and under it the program it runs (files and defines)
+// and the roles it reads and writes; then what it left out and why; with `millis` (one per
 // pass) the time of each.
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
                         const std::vector<double>* millis = nullptr);

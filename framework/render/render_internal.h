@@ -53,9 +53,11 @@ void readBack(const ShaderLibrary& library, const TechniqueRow& row, const Shado
 void noteLightingStubs(const ShaderLibrary& library, const TechniqueRow& row, const Image& shadow,
                        RenderResult& result);
 
-// The shadow pass (or the second-depth peel) of one light into its maps, with program `p`.
-void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
-                   const ShadowEffect& fx, const SceneGeometry& geometry);
+// The shadow pass (or the second-depth peel) of one light, with program `p`: draws into the
+// layers of the role `pass` writes with its depth role, the roles it reads bound in order.
+void runShadowPass(GlProgram& p, const PlannedPass& pass, ShadowMaps& m,
+                   const std::vector<glm::vec4>& clear, const ShadowEffect& fx,
+                   const SceneGeometry& geometry);
 
 // The lighting pass of camera `cam` into `color`/`shadow`/`depth` (created here), with program
 // `p` and every light's maps (every cascade's) bound as the lighting samples them; `plan`

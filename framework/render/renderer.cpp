@@ -138,7 +138,7 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
         switch (pass.kind) {
             case PassKind::Shadow:
             case PassKind::ShadowSecond:
-                runShadowPass(prog, pass.kind == PassKind::ShadowSecond, *m, clear, fx, geometry);
+                runShadowPass(prog, pass, *m, clear, fx, geometry);
                 break;
             case PassKind::Widen:
                 for (size_t k = 0; k < src().size(); ++k) widenPass(prog, src()[k], dst()[k]);

@@ -55,17 +55,18 @@ FramebufferHandle makeFramebuffer(const std::vector<const Texture*>& colors, con
     return fb;
 }
 
-void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<glm::vec4>& clear,
-                   const ShadowEffect& fx, const SceneGeometry& geometry) {
+void runShadowPass(GlProgram& p, const PlannedPass& pass, ShadowMaps& m,
+                   const std::vector<glm::vec4>& clear, const ShadowEffect& fx,
+                   const SceneGeometry& geometry) {
     const int n = fx.mapSize;
     std::vector<const Texture*> colors;
-    if (second) colors.push_back(&m.one(TextureRole::Second));
-    else for (const Texture& t : m.tex.at(TextureRole::Raw)) colors.push_back(&t);
-    FramebufferHandle fb = makeFramebuffer(colors, m.one(TextureRole::Depth));
+    for (const Texture& t : m.tex.at(pass.writes)) colors.push_back(&t);
+    FramebufferHandle fb = makeFramebuffer(colors, m.one(pass.depth.value()));
     const float farDepth = 1.0f;
     for (size_t k = 0; k < colors.size(); ++k) {
-        // Relative depth 1 everywhere: nothing in front (msm4: moments (1, 1, 1, 1)).
-        const glm::vec4 c = second ? glm::vec4(1.0f) : clear[k];
+        // Relative depth 1 everywhere: nothing in front (msm4: moments (1, 1, 1, 1)); the
+        // second depth's midpoint likewise.
+        const glm::vec4 c = pass.writes == TextureRole::Raw ? clear[k] : glm::vec4(1.0f);
         gl::ClearNamedFramebufferfv(fb.id(), GL_COLOR, GLint(k), &c.x);
     }
     gl::ClearNamedFramebufferfv(fb.id(), GL_DEPTH, 0, &farDepth);
@@ -77,12 +78,13 @@ void runShadowPass(GlProgram& p, bool second, ShadowMaps& m, const std::vector<g
     p.set("uLightForward", m.view.forward);
     p.set("uDepthRange", m.view.depthRange);
     setTechniqueParameters(p, fx);
-    if (second) {
-        const auto eps = float(techniqueParameter(fx, "peelEpsilon"));
-        p.set("uPeelEpsilon", eps);
+    if (pass.kind == PassKind::ShadowSecond) {
+        p.set("uPeelEpsilon", float(techniqueParameter(fx, "peelEpsilon")));
         p.set("uFirstDepth", 0);
-        gl::BindTextureUnit(0, m.one(TextureRole::Raw).id());
     }
+    // What the pass reads (the peel: the first surface's depth), at units 0, 1, ...
+    for (size_t unit = 0; unit < pass.reads.size(); ++unit)
+        gl::BindTextureUnit(GLuint(unit), m.one(pass.reads[unit]).id());
     geometry.draw(p, true, false);
     gl::BindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -245,11 +245,10 @@ void runWorker(const WorkerArgs& a) {
                 }
         }
     }
-    const std::string prefix = a.stage ? a.stage->image : "";
     fs::create_directories(a.out);
     for (const auto& [name, image] : result.images) {
         if (isImage(name, ImageKind::Sat)) continue;  // the table itself is never compared
-        if (!prefix.empty() && name.rfind(prefix, 0) != 0) continue;
+        if (a.stage && !a.stage->images.empty() && !stageImage(*a.stage, name)) continue;
         writeRaw(image, fs::path(a.out) / (name + ".raw"));
         out.images.push_back(name);
     }
@@ -257,7 +256,7 @@ void runWorker(const WorkerArgs& a) {
     // grade.cpp): a filter's whole output is -1; computeMoments gave -1 on every rung of the
     // depth ladder (the map's background keeps its clear value, so the map cannot tell).
     if (a.stage && a.stage->scoutedBy == a.stage->stage) {
-        const std::string shown = is(a, Stage::Moments) ? kDepthLadderImage : a.stage->image;
+        const std::string shown = is(a, Stage::Moments) ? kDepthLadderImage : toString(a.stage->images.front());
         if (auto it = result.images.find(shown); it != result.images.end())
             out.stubEverywhere = it->second.allStub();
     }

@@ -216,13 +216,10 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
     for (const auto& n : worker->stubNotes)
         if (std::find(files.begin(), files.end(), n.file) != files.end()) notes += n.text + "\n";
 
-    const std::string prefix = job.stage.image;
     std::vector<std::string> images;
     for (const auto& name : worker->images)
-        if (name.rfind(prefix, 0) == 0 &&
-            (prefix != "moments_filtered" || name == prefix || name == kSatKernelImage))
-            images.push_back(name);
-    if (images.empty()) images.push_back(prefix);
+        if (gradedImage(job.stage, name)) images.push_back(name);
+    if (images.empty()) images.push_back(toString(job.stage.images.front()));
     double fraction = 1.0, worstCap = 1.0;
     double mapsFraction = 1.0, ladderFraction = 1.0;  // the moment maps', the depth ladder's
     std::string worstWhere;  // the first image's texel beyond the worst-texel factor, in words

@@ -1,29 +1,41 @@
 // stages: the stage table (stages.h).
 #include "stages.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sl::grader {
 
 const std::vector<StageRow>& stageTable() {
     static const std::vector<StageRow> rows = {
-        {.stage = Stage::Moments, .name = "moments", .files = {"moments.glsl"}, .image = "moments_raw",
+        {.stage = Stage::Moments, .name = "moments", .files = {"moments.glsl"}, .images = {ImageKind::MomentsRaw, ImageKind::DepthLadder},
          .compareBy = CompareBy::Moments, .scoutedBy = Stage::Moments},
         {.stage = Stage::Gaussian, .name = "gaussian", .files = {"gaussian_blur.comp"},
-         .image = "moments_filtered", .input = "moments_raw", .filter = "gaussian",
+         .images = {ImageKind::MomentsFiltered, ImageKind::SatKernel}, .input = "moments_raw", .filter = "gaussian",
          .compareBy = CompareBy::Filtered, .scoutedBy = Stage::Gaussian},
         {.stage = Stage::Sat, .name = "sat", .files = {"sat.comp", "sat_lookup.glsl"},
-         .image = "moments_filtered", .input = "moments_raw", .filter = "sat",
+         .images = {ImageKind::MomentsFiltered, ImageKind::SatKernel}, .input = "moments_raw", .filter = "sat",
          .compareBy = CompareBy::Filtered, .scoutedBy = Stage::Sat},
         // msm's stub is seen on the hard cases (robustness), which speak for it.
-        {.stage = Stage::Msm, .name = "msm", .files = {"msm.glsl"}, .image = "shadow",
+        {.stage = Stage::Msm, .name = "msm", .files = {"msm.glsl"}, .images = {ImageKind::Shadow},
          .input = "moments_filtered", .compareBy = CompareBy::Shadow, .scoutedBy = Stage::Robustness},
-        {.stage = Stage::Robustness, .name = "robustness", .files = {"msm.glsl"}, .image = "",
+        {.stage = Stage::Robustness, .name = "robustness", .files = {"msm.glsl"}, .images = {},
          .compareBy = CompareBy::HardCases, .perScene = false, .scoutedBy = Stage::Robustness},
-        {.stage = Stage::Final, .name = "final", .files = {}, .image = "final",
+        {.stage = Stage::Final, .name = "final", .files = {}, .images = {ImageKind::Final},
          .compareBy = CompareBy::Colour, .scoutedBy = std::nullopt},
     };
     return rows;
+}
+
+bool stageImage(const StageRow& row, const std::string& name) {
+    const auto n = ImageName::parse(name);
+    return n && !n->msmIsolated && std::find(row.images.begin(), row.images.end(), n->kind) != row.images.end();
+}
+
+bool gradedImage(const StageRow& row, const std::string& name) {
+    if (!stageImage(row, name)) return false;
+    const ImageName n = *ImageName::parse(name);
+    return n.kind != ImageKind::MomentsFiltered || (n.light < 0 && n.cascade == 0 && n.layer == 0);
 }
 
 const StageRow& stageRow(Stage stage) {

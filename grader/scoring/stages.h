@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "image_name.h"
+
 namespace sl::grader {
 
 enum class Stage { Moments, Gaussian, Sat, Msm, Robustness, Final };
@@ -21,7 +23,9 @@ struct StageRow {
     Stage stage;
     const char* name;                // moments | gaussian | sat | msm | robustness | final
     std::vector<std::string> files;  // the submission's files it compiles (final: stageFiles)
-    const char* image;               // the image it is compared on, before light/camera suffixes
+    // The kinds of image it is compared on (every light, cascade, layer and camera of each); the
+    // first names the stage's image. A filter stage grades the first shadowing light's map only.
+    std::vector<ImageKind> images;
     const char* input = "";          // the reference image it renders from ("": the scene alone)
     const char* filter = "";         // it applies to the scenes with this filter only ("": all)
     CompareBy compareBy = CompareBy::Moments;
@@ -40,6 +44,11 @@ const StageRow& stageRow(const std::string& name);
 const std::vector<std::string>& stageNames();  // the rows' names, in report order
 // The submission files a stage compiles; final: the files of a scene with this filter.
 std::vector<std::string> stageFiles(const StageRow& row, const std::string& filter);
+// Whether the worker keeps image `name` for this stage (its kinds, never an msm_ image).
+bool stageImage(const StageRow& row, const std::string& name);
+// Whether `name` is graded for this stage: a stage image, and for the filters the first
+// shadowing light's map (moments_filtered) and the per-pixel kernel image only.
+bool gradedImage(const StageRow& row, const std::string& name);
 // The stages whose submission files a render of `row` runs on a scene with `filter`: final runs
 // moments, the scene's filter stage and msm; any other stage itself.
 std::vector<const StageRow*> stagesRun(const StageRow& row, const std::string& filter);
