@@ -18,7 +18,8 @@
 //
 // Invocation mapping (image space): with T = uTexelsPerInvocation (1 unless your shader
 // declares that uniform with an initializer, e.g. `uniform int uTexelsPerInvocation = 2;`,
-// which the framework reads back), invocation g = gl_GlobalInvocationID.xy writes the T
+// which the framework reads back from the driver: use it in your code, since an unused uniform
+// is dropped and reads as 1), invocation g = gl_GlobalInvocationID.xy writes the T
 // texels p0 + j·uDirection, j = 0 … T−1, where p0 = g + g·uDirection·(T − 1). The framework
 // dispatches ceil(W / (local_size_x·Tx)) × ceil(H / (local_size_y·Ty)) work groups, Tx = T for
 // the x pass and Ty = T for the y pass (1 otherwise), reading the local size you declare.
