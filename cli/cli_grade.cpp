@@ -12,6 +12,7 @@
 #include "grader.h"
 #include "paths.h"
 #include "results.h"
+#include "study_shard.h"
 #include "worker.h"
 
 #include <iostream>
@@ -26,6 +27,8 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
         std::string submission, batch, out;
         int jobs = 2;
         bool noReport = false;
+        std::string shard = "1/1";
+        bool merge = false;
     };
     auto g = std::make_shared<GradeArgs>();
     auto* sub = grade->add_option("--submission", g->submission, "folder holding the stage files");
@@ -50,6 +53,10 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
     grade->add_option("--rubric", g->o.rubric, "rubric JSON (default grader/rubric.json)");
     grade->add_flag("--no-report", g->noReport, "skip the HTML report");
     grade->add_flag("--keep-work", g->o.keepWork, "keep OUT/.work-<pid> (worker images and logs)");
+    grade->add_option("--shard", g->shard, "batch: grade only the K-th of every N submissions (K/N), "
+                                           "leaving the gradebook to --merge (a Slurm array's task)");
+    grade->add_flag("--merge", g->merge, "batch: grade nothing; write scores.csv, index.html and "
+                                         "class.html of what the shards graded into OUT");
     grade->add_option("--reference-images", g->o.referenceImages)->group("");  // batch children
     grade->callback([g, &ctx] {
         if (g->submission.empty() == g->batch.empty())
@@ -67,9 +74,29 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
         o.backend = ctx.backend;
         o.report = !g->noReport;
         if (!g->batch.empty()) {
-            const int n = gradeBatch(g->batch, g->jobs, o);
-            std::cout << "graded " << n << " submissions: " << (o.out / "scores.csv").string() << "\n";
-            ctx.exitCode = Ok;
+            BatchOptions b;
+            b.dir = g->batch;
+            b.parallel = g->jobs;
+            b.mergeOnly = g->merge;
+            try {
+                parseShard(g->shard, b.shard, b.shards);
+            } catch (const std::invalid_argument& e) {
+                throw CLI::ValidationError("--shard", e.what());
+            }
+            if (b.mergeOnly && b.shards > 1) throw CLI::ValidationError("--merge", "give --merge without --shard");
+            const BatchOutcome r = gradeBatch(b, o);
+            std::cout << (b.shards > 1 ? "shard " + g->shard + ": " : "") << "graded " << r.graded
+                      << ", already graded " << r.reused << " (their rows kept)";
+            if (r.wroteGradebook)
+                std::cout << "; " << r.submissions << " submissions in " << (o.out / "scores.csv").string()
+                          << ", " << (o.out / "index.html").string() << ", " << (o.out / "class.html").string();
+            std::cout << "\n";
+            if (r.wroteGradebook && !r.missing.empty()) {
+                std::cout << r.missing.size() << " not graded yet:";
+                for (size_t i = 0; i < r.missing.size() && i < 10; ++i) std::cout << " " << r.missing[i];
+                std::cout << (r.missing.size() > 10 ? " ..." : "") << "\n";
+            }
+            ctx.exitCode = r.wroteGradebook && !r.missing.empty() ? Failed : Ok;
             return;
         }
         o.submission = g->submission;

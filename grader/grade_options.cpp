@@ -52,8 +52,10 @@ GradeOptions GradeOptions::fromJson(const json& j) {
 }
 
 json BatchRow::toJson() const {
-    return {{"failed", failed}, {"score", score}, {"maxScore", maxScore},
-            {"stagePoints", stagePoints}, {"notes", notes}};
+    return {{"failed", failed}, {"score", score},       {"maxScore", maxScore},
+            {"stagePoints", stagePoints},               {"stageMax", stageMax},
+            {"lost", lost},     {"notes", notes},       {"report", report},
+            {"digest", digest}};
 }
 
 BatchRow BatchRow::fromJson(const json& j) {
@@ -62,7 +64,11 @@ BatchRow BatchRow::fromJson(const json& j) {
     r.score = field<double>(j, "score");
     r.maxScore = field<double>(j, "maxScore");
     r.stagePoints = field<std::map<std::string, double>>(j, "stagePoints");
+    r.stageMax = field<std::map<std::string, double>>(j, "stageMax");
+    r.lost = field<std::vector<std::string>>(j, "lost");
     r.notes = field<std::vector<std::string>>(j, "notes");
+    r.report = field<bool>(j, "report");
+    r.digest = field<std::string>(j, "digest");
     return r;
 }
 

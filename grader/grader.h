@@ -75,7 +75,11 @@ struct BatchRow {
     bool failed = false;
     double score = 0.0, maxScore = 0.0;
     std::map<std::string, double> stagePoints;  // stage -> points earned
+    std::map<std::string, double> stageMax;     // stage -> points it is worth
+    std::vector<std::string> lost;               // "scene stage -points" per test short of full
     std::vector<std::string> notes;              // the visible warnings, or why it failed
+    bool report = false;                         // OUT/<name>/report/index.html was written
+    std::string digest;  // what was graded (batch_store.h): the submission's bytes and the setup
 
     nlohmann::json toJson() const;
     static BatchRow fromJson(const nlohmann::json& j);

@@ -178,7 +178,7 @@ TEST(Grader, BatchWritesOneRowPerSubmission) {
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("2/2"), std::string::npos) << r.output;  // progress bar
     std::string csv = test::readFile(out / "scores.csv");
-    EXPECT_NE(csv.find("submission,total,max,moments,gaussian,sat,msm,robustness,final"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("student,total,max,moments,gaussian,sat,msm,robustness,final,lost,notes"), std::string::npos) << csv;
     EXPECT_NE(csv.find("alice,100.00,100.00"), std::string::npos) << csv;
     EXPECT_NE(csv.find("bob,0.00,100.00"), std::string::npos) << csv;
     EXPECT_TRUE(fs::exists(out / "alice" / "results.json"));

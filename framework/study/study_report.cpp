@@ -1,6 +1,7 @@
 // study_report: plots and page of a study (see study_report.h).
 #include "study_report.h"
 
+#include "html_escape.h"
 #include "paths.h"
 #include "study_crops.h"
 #include "study_figures.h"
@@ -24,12 +25,6 @@ constexpr const char* kTableDigits = "%.4g";
 std::string label(const StudyRow& r) {
     return r.filter + (r.radius ? " r" + std::to_string(r.radius) : "") + " " +
            std::to_string(r.mapSize);
-}
-
-std::string html(const std::string& s) {
-    std::string o;
-    for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-    return o;
 }
 
 // gnuplot's log axes cannot show 0: an exact row is drawn at the axis floor.
@@ -199,14 +194,14 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
 
     std::ofstream page(dir / "index.html");
     page << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Shadowlab study: "
-         << html(title) << "</title>\n<style>body{font-family:sans-serif;margin:2em;max-width:1400px}"
+         << htmlEscape(title) << "</title>\n<style>body{font-family:sans-serif;margin:2em;max-width:1400px}"
             "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:3px 8px;"
             "text-align:right}th{background:#eee}td.l{text-align:left}figure{display:inline-block;"
             "margin:4px}figure img{width:256px;image-rendering:pixelated}figcaption{font-size:80%}"
-            "</style></head><body>\n<h1>Accuracy against cost: " << html(title) << "</h1>\n";
-    if (!headline.empty()) page << "<p>" << html(headline) << "</p>\n";
+            "</style></head><body>\n<h1>Accuracy against cost: " << htmlEscape(title) << "</h1>\n";
+    if (!headline.empty()) page << "<p>" << htmlEscape(headline) << "</p>\n";
     page << "<p>Error: G against the ray-traced truth over the pixels the light reaches. Cost: the "
-            "frame's CPU time across llvmpipe's threads (" << html(rows.front().costMethod)
+            "frame's CPU time across llvmpipe's threads (" << htmlEscape(rows.front().costMethod)
          << "), minimum over repeats, divided by a 1024² RGBA32F copy pass's, measured the same "
             "way and interleaved with the frames. "
             "Every figure here is drawn from <a href=\"study.csv\">study.csv</a>.</p>\n"
@@ -220,7 +215,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
                 "</th><th>filter</th><th>r</th><th>map</th><th>bytes</th><th>frame/copy</th>"
                 "<th>RMSE truth</th><th>p99 truth</th><th>RMSE filtered</th><th>leak area</th></tr>\n";
         for (const StudyRow* r : set.timeFront)
-            page << "<tr><td class=l>" << html(r->spec) << "</td><td class=l>" << r->filter << "</td><td>"
+            page << "<tr><td class=l>" << htmlEscape(r->spec) << "</td><td class=l>" << r->filter << "</td><td>"
                  << r->radius << "</td><td>" << r->mapSize << "²</td><td>" << r->mapBytes << "</td><td>"
                  << formatNumber(r->frameRatio, "%.2f") << "</td><td>" << formatNumber(r->truth.rmse, kTableDigits) << "</td><td>"
                  << formatNumber(r->truth.p99, kTableDigits) << "</td><td>" << formatNumber(r->filtered.rmse, kTableDigits) << "</td><td>"
@@ -229,8 +224,8 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
                 "<th>question</th><th>configuration</th><th>RMSE truth</th><th>frame/copy</th>"
                 "<th>map bytes</th></tr>\n";
         for (const Pick& p : set.picks)
-            page << "<tr><td class=l>" << html(p.question) << "</td><td class=l>"
-                 << html(pickConfiguration(*p.row)) << "</td><td>" << formatNumber(p.row->truth.rmse, kTableDigits)
+            page << "<tr><td class=l>" << htmlEscape(p.question) << "</td><td class=l>"
+                 << htmlEscape(pickConfiguration(*p.row)) << "</td><td>" << formatNumber(p.row->truth.rmse, kTableDigits)
                  << "</td><td>" << formatNumber(p.row->frameRatio, "%.2f") << "</td><td>" << p.row->mapBytes
                  << "</td></tr>\n";
         page << "</table>\n<h3>Where the cost goes</h3>\n<img src=\"kernel_cost" << set.costName
@@ -259,7 +254,7 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
                                              slugOf(spec) + "_light" + formatNumber(lightSize, "%g"));
         for (const FailureCrop& c : crops)
             page << "<figure><img style=\"width:auto\" src=\"" << c.file << "\" alt=\"" << c.kind
-                 << "\"><figcaption>" << html(spec) << ", " << html(label(*best)) << ", light "
+                 << "\"><figcaption>" << htmlEscape(spec) << ", " << htmlEscape(label(*best)) << ", light "
                  << formatNumber(lightSize, "%g") << ": " << (c.kind == "leak" ? "light leaking" : "too dark")
                  << ", mean |ΔG| " << formatNumber(c.meanError, "%.2f") << " at (" << c.x << ", " << c.y
                  << ")</figcaption></figure>\n";
@@ -269,11 +264,11 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
     for (const std::string& spec : specs) {
         const StudyRow* best = mostAccurate(bySpec[spec], lightSize);
         if (!best) continue;
-        page << "<h3>" << html(spec) << " — " << html(label(*best)) << ", light size "
+        page << "<h3>" << htmlEscape(spec) << " — " << htmlEscape(label(*best)) << ", light size "
              << formatNumber(lightSize, "%g") << ": RMSE "
              << formatNumber(best->truth.rmse, kTableDigits) << " (truth), " << formatNumber(best->filtered.rmse, kTableDigits)
              << " (filtered truth), frame/copy " << formatNumber(best->frameRatio, "%.2f") << "</h3>\n"
-             << "<figure><img src=\"" << best->image << "\" alt=\"G\"><figcaption>G, " << html(spec)
+             << "<figure><img src=\"" << best->image << "\" alt=\"G\"><figcaption>G, " << htmlEscape(spec)
              << "</figcaption></figure><figure><img src=\"" << best->errorMap
              << "\" alt=\"error\"><figcaption>G − truth (red: leaks, blue: too dark)</figcaption>"
                 "</figure><figure><img src=\"" << truthImage(dir, best->lightSize)
@@ -283,12 +278,12 @@ void writeStudyReport(const fs::path& dir, const std::vector<StudyRow>& rows, st
             "<th>light</th><th>frame CPU ms (min / median / max)</th><th>frame/copy</th><th>RMSE truth</th><th>max</th><th>RMSE filtered"
             "</th><th>reused</th></tr>\n";
     for (const StudyRow& r : rows)
-        page << "<tr><td class=l>" << html(r.spec) << "</td><td class=l>" << r.filter << "</td><td>"
+        page << "<tr><td class=l>" << htmlEscape(r.spec) << "</td><td class=l>" << r.filter << "</td><td>"
              << r.radius << "</td><td>" << r.mapSize << "²</td><td>" << formatNumber(r.lightSize, "%g")
              << "</td><td>" << formatNumber(r.frameMin, "%.2f") << " / " << formatNumber(r.frameMedian, "%.2f")
              << " / " << formatNumber(r.frameMax, "%.2f") << "</td><td>" << formatNumber(r.frameRatio, "%.2f") << "</td><td>" << formatNumber(r.truth.rmse, kTableDigits)
              << "</td><td>" << formatNumber(r.truth.max, kTableDigits) << "</td><td>" << formatNumber(r.filtered.rmse, kTableDigits)
-             << "</td><td class=l>" << html(r.reused) << "</td></tr>\n";
+             << "</td><td class=l>" << htmlEscape(r.reused) << "</td></tr>\n";
     page << "</table>\n</body></html>\n";
     log << "wrote " << (dir / "index.html").string() << "\n";
 }

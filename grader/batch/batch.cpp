@@ -6,6 +6,9 @@
 // reason.
 #include "batch.h"
 
+#include "batch_store.h"
+#include "gradebook.h"
+
 #include "image_codec.h"
 #include "isolation.h"
 #include "jobs.h"
@@ -16,6 +19,8 @@
 #include <fstream>
 #include <iostream>
 
+#include <unistd.h>
+
 namespace sl::grader {
 namespace {
 
@@ -24,20 +29,6 @@ void progress(size_t done, size_t total, const std::string& last) {
     const int filled = total ? int(width * done / total) : width;
     std::cerr << "\r[" << std::string(size_t(filled), '#') << std::string(size_t(width - filled), '.')
               << "] " << done << "/" << total << "  " << last.substr(0, 30) << "\033[K" << std::flush;
-}
-
-std::string csvField(std::string s) {
-    for (char& c : s) if (c == '\n' || c == '\r') c = ' ';
-    if (s.find_first_of(",\"") == std::string::npos) return s;
-    std::string o = "\"";
-    for (char c : s) o += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return o + "\"";
-}
-
-std::string points(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2f", v);
-    return buf;
 }
 
 // `shadowlab grade` for one submission, with the batch's options: forked, gradeAndPrint(o);
@@ -56,7 +47,11 @@ ChildSpec gradeSpec(const GradeOptions& o, const fs::path& logPath) {
 
 int gradeAndPrint(const GradeOptions& o) {
     const GradeSummary s = gradeSubmission(o);
-    if (!o.rowFile.empty()) std::ofstream(o.rowFile) << batchRow(s).toJson().dump() << "\n";
+    if (!o.rowFile.empty()) {
+        BatchRow row = batchRow(s);
+        row.report = o.report && !s.failed;
+        std::ofstream(o.rowFile) << row.toJson().dump() << "\n";
+    }
     if (!s.failed) printScoreTable(std::cout, s);
     std::cout << "results: " << (o.out / "results.json").string();
     if (o.report && !s.failed) std::cout << ", report: " << (o.out / "report" / "index.html").string();
@@ -79,6 +74,9 @@ BatchRow batchRow(const GradeSummary& s) {
     for (const auto& t : s.tests) {
         row.maxScore += round2(t.maxScore);
         row.stagePoints[t.stage] += round2(t.score);
+        row.stageMax[t.stage] += round2(t.maxScore);
+        if (t.lostPoints())
+            row.lost.push_back(t.scene + " " + t.stage + " -" + fixedDigits(round2(t.maxScore) - round2(t.score)));
     }
     // One line a note: a warning's first line, and later ones written as warnings of their own.
     const VisibleSummary v = visibleSummary(s);
@@ -98,86 +96,136 @@ BatchRow batchRow(const GradeSummary& s) {
     return row;
 }
 
-int gradeBatch(const fs::path& dir, int parallel, const GradeOptions& base) {
-    std::vector<fs::path> subs;
-    for (const auto& e : fs::directory_iterator(dir))
-        if (e.is_directory() && !e.is_symlink()) subs.push_back(e.path());
-    std::sort(subs.begin(), subs.end());
-    GradeOptions shared = base;
-    if (resolveReferenceMode(base.reference) == "live") {
-        // One reference render per scene for the whole batch, not one per submission.
-        shared.referenceImages = base.out / ".reference";
-        std::cerr << "rendering the reference scenes once...\n";
-        GradeOptions r = base;
-        r.out = base.out / ".reference-work";
-        renderReferenceImages(r, shared.referenceImages);
-    }
-    std::vector<ChildSpec> specs;
-    const fs::path rows = base.out / ".rows";  // each child's BatchRow
-    fs::create_directories(rows);
-    for (const auto& sub : subs) {
-        GradeOptions o = shared;
-        o.submission = sub;
-        o.out = base.out / sub.filename();
-        o.jobs = parallel > 1 ? 1 : base.jobs;
-        o.rowFile = rows / (sub.filename().string() + ".json");
-        std::error_code ec;
-        fs::create_directories(o.out, ec);
-        specs.push_back(gradeSpec(o, base.out / (sub.filename().string() + ".log")));
-    }
-    size_t done = 0;
-    progress(0, subs.size(), "");
-    // A whole submission's limit: generous, only against a grader that never returns.
-    const Limits limits{1800.0, 2 * base.memoryMb};
-    // Loaded once here, not in every submission's child (log4cplus starts idle threads).
-    loadBeforeForking([] { imageCodec(); });
-    const auto results = runChildren(specs, limits, std::max(1, parallel),
-                                     [&](size_t i, const ChildResult&) {
-                                         progress(++done, subs.size(), subs[i].filename().string());
-                                     });
-    std::cerr << "\n";
+namespace {
 
-    std::vector<BatchRow> table(subs.size());
-    for (size_t i = 0; i < subs.size(); ++i) {
-        const ChildResult& c = results[i];
+// The reference's renders for this setup, made once and kept in OUT/.reference-<digest>: a
+// batch started again, or another shard of it, uses them. Made in a folder of this process's
+// own and renamed into place, so a folder of that name is always complete.
+fs::path referenceRenders(const GradeOptions& base, const std::string& setup) {
+    const fs::path done = base.out / (".reference-" + setup.substr(0, 16));
+    std::error_code ec;
+    if (fs::is_regular_file(done / "times.json", ec)) return done;
+    const fs::path part = base.out / (".reference-part-" + std::to_string(::getpid()));
+    fs::remove_all(part, ec);
+    std::cerr << "rendering the reference scenes once...\n";
+    GradeOptions r = base;
+    r.out = base.out / (".reference-work-" + std::to_string(::getpid()));
+    renderReferenceImages(r, part);
+    fs::rename(part, done, ec);
+    if (ec) fs::remove_all(part, ec);  // another shard's renders came first: the same images
+    return done;
+}
+
+bool reservedName(const std::string& name) {
+    return name == "scores.csv" || name == "index.html" || name == "class.html";
+}
+
+}  // namespace
+
+BatchOutcome gradeBatch(const BatchOptions& batch, const GradeOptions& base) {
+    BatchOutcome outcome;
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(batch.dir)) {
+        const std::string name = e.path().filename().string();
+        if (e.is_directory() && !e.is_symlink() && name[0] != '.') names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    fs::create_directories(base.out);
+    const std::string setup = setupDigest(base);
+    std::vector<std::string> digests(names.size());
+    std::vector<size_t> todo;  // this shard's submissions with no row under their digest
+    for (size_t i = 0; i < names.size(); ++i) {
+        digests[i] = rowDigest(submissionDigest(batch.dir / names[i]), setup);
+        const bool mine = int(i % size_t(batch.shards)) == batch.shard - 1;
+        if (storedRow(base.out, names[i], digests[i])) {
+            if (mine) ++outcome.reused;
+        } else if (mine && !batch.mergeOnly && reservedName(names[i])) {
+            BatchRow row;
+            row.failed = true;
+            row.notes.push_back("the folder's name is one of the batch's own files: rename it");
+            writeFailureResults(base.out / names[i] / "results.json", row.notes.back(), 0.0);
+            row.digest = digests[i];
+            storeRow(base.out, names[i], row);
+            ++outcome.graded;
+        } else if (mine && !batch.mergeOnly) {
+            todo.push_back(i);
+        }
+    }
+
+    GradeOptions shared = base;
+    if (!todo.empty() && resolveReferenceMode(base.reference) == "live")
+        shared.referenceImages = referenceRenders(base, setup);
+    std::vector<ChildSpec> specs;
+    for (size_t i : todo) {
+        GradeOptions o = shared;
+        o.submission = batch.dir / names[i];
+        o.out = base.out / names[i];
+        o.jobs = batch.parallel > 1 ? 1 : base.jobs;
+        o.rowFile = o.out / ".row.json";  // the child's row, stored with its digest once it ends
+        std::error_code ec;
+        fs::remove_all(o.out, ec);  // a report of an earlier grade must not outlive it
+        fs::create_directories(o.out, ec);
+        specs.push_back(gradeSpec(o, base.out / (names[i] + ".log")));
+    }
+    // A row from what the child left (its row file, or how it ended), stored as soon as it ends.
+    auto store = [&](size_t k, const ChildResult& c) {
+        const size_t i = todo[k];
+        const fs::path sub = base.out / names[i];
+        BatchRow row;
         const bool exited = c.kind == ChildResult::Exited && (c.exitCode == 0 || c.exitCode == 1);
-        std::ifstream in(rows / (subs[i].filename().string() + ".json"));
+        std::ifstream in(sub / ".row.json");
         const nlohmann::json r = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+        bool read = false;
         if (exited && r.is_object()) {
             try {
-                table[i] = BatchRow::fromJson(r);
-                continue;
+                row = BatchRow::fromJson(r);
+                read = true;
             } catch (const std::invalid_argument&) {
             }
         }
-        const std::string why =
-            c.kind == ChildResult::Signalled ? "the grader crashed (" + signalName(c.signal) + ")"
-            : c.kind == ChildResult::TimedOut ? "the grader did not finish in 1800 s"
-            : "the grader stopped (exit " + std::to_string(c.exitCode) + ")";
-        writeFailureResults(base.out / subs[i].filename() / "results.json", why, c.seconds);
-        table[i].failed = true;
-        table[i].notes.push_back(why);
-    }
-    std::error_code ec;
-    fs::remove_all(rows, ec);
-
-    std::ofstream csv(base.out / "scores.csv");
-    csv << "submission,total,max";
-    for (const auto& stage : stageNames()) csv << "," << stage;
-    csv << ",notes\n";
-    for (size_t i = 0; i < subs.size(); ++i) {
-        const BatchRow& s = table[i];
-        csv << csvField(subs[i].filename().string()) << "," << points(s.score) << ","
-            << points(s.maxScore);
-        for (const auto& stage : stageNames()) {
-            auto it = s.stagePoints.find(stage);
-            csv << "," << (it == s.stagePoints.end() ? "" : points(it->second));
+        if (!read) {
+            const std::string why =
+                c.kind == ChildResult::Signalled ? "the grader crashed (" + signalName(c.signal) + ")"
+                : c.kind == ChildResult::TimedOut ? "the grader did not finish in 1800 s"
+                : "the grader stopped (exit " + std::to_string(c.exitCode) + ")";
+            writeFailureResults(sub / "results.json", why, c.seconds);
+            row = BatchRow();
+            row.failed = true;
+            row.notes.push_back(why);
         }
-        std::string notes;
-        for (const auto& w : s.notes) notes += (notes.empty() ? "" : "; ") + w;
-        csv << "," << csvField(notes) << "\n";
+        std::error_code ec;
+        fs::remove(sub / ".row.json", ec);
+        row.digest = digests[i];
+        storeRow(base.out, names[i], row);
+        ++outcome.graded;
+    };
+    size_t done = 0;
+    if (!todo.empty()) {
+        progress(0, todo.size(), "");
+        // A whole submission's limit: generous, only against a grader that never returns.
+        const Limits limits{1800.0, 2 * base.memoryMb};
+        // Loaded once here, not in every submission's child (log4cplus starts idle threads).
+        loadBeforeForking([] { imageCodec(); });
+        runChildren(specs, limits, std::max(1, batch.parallel), [&](size_t k, const ChildResult& c) {
+            store(k, c);
+            progress(++done, todo.size(), names[todo[k]]);
+        });
+        std::cerr << "\n";
     }
-    return int(subs.size());
+
+    // The gradebook, of every submission, from the rows alone (gradebook.h); a shard leaves it
+    // to the merge.
+    std::vector<GradebookEntry> entries;
+    for (size_t i = 0; i < names.size(); ++i) {
+        entries.push_back({names[i], storedRow(base.out, names[i], digests[i])});
+        if (!entries.back().row) outcome.missing.push_back(names[i]);
+    }
+    outcome.submissions = names.size();
+    if (batch.shards == 1 || batch.mergeOnly) {
+        writeGradebook(base.out, entries);
+        outcome.wroteGradebook = true;
+    }
+    return outcome;
 }
 
 }  // namespace sl::grader

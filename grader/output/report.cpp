@@ -7,6 +7,8 @@
 // Hidden scenes never appear in report/ (it may be forwarded to a student); the staff page
 // (report-staff/) shows them, marked.
 #include "report.h"
+
+#include "html_escape.h"
 #include "image_name.h"
 
 #include "image_io.h"
@@ -67,23 +69,10 @@ Image heatMap(const Image& err) {
     return out;
 }
 
-std::string escape(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        switch (c) {
-            case '<': o += "&lt;"; break;
-            case '>': o += "&gt;"; break;
-            case '&': o += "&amp;"; break;
-            case '"': o += "&quot;"; break;
-            default: o += c;
-        }
-    }
-    return o;
-}
 
 
 std::string number(const nlohmann::json& j, int digits = 4) {
-    if (!j.is_number()) return j.is_null() ? "NaN" : escape(j.dump());
+    if (!j.is_number()) return j.is_null() ? "NaN" : htmlEscape(j.dump());
     std::ostringstream o;
     o.precision(digits);
     o << j.get<double>();
@@ -116,7 +105,7 @@ void metricsTable(std::ostringstream& h, const nlohmann::json& m) {
     h << "</td><td>" << number(o.value("mean", nlohmann::json(0))) << "</td><td>"
       << number(o.value("rms", nlohmann::json(0))) << "</td><td>" << number(o.value("max", nlohmann::json(0)))
       << "</td><td>" << number(o.value("psnr", nlohmann::json(0)), 3) << " dB</td></tr></table>\n";
-    if (m.contains("error")) h << "<p>" << escape(m["error"].get<std::string>()) << "</p>\n";
+    if (m.contains("error")) h << "<p>" << htmlEscape(m["error"].get<std::string>()) << "</p>\n";
 }
 
 // The hard cases that failed, as a table (worker.json's "failing").
@@ -130,9 +119,9 @@ void robustnessTable(std::ostringstream& h, const nlohmann::json& r) {
     for (const auto& c : failing) {
         std::string b;
         for (const auto& v : c.value("b", nlohmann::json::array())) b += (b.empty() ? "" : ", ") + number(v, 7);
-        h << "<tr><td>" << escape(c.value("case", "")) << "</td><td>(" << b << ")</td><td>"
+        h << "<tr><td>" << htmlEscape(c.value("case", "")) << "</td><td>(" << b << ")</td><td>"
           << number(c.value("zf", nlohmann::json(0)), 7) << "</td><td>" << number(c.value("G", nlohmann::json(0)), 7)
-          << "</td><td>" << escape(c.value("problems", "")) << "</td></tr>\n";
+          << "</td><td>" << htmlEscape(c.value("problems", "")) << "</td></tr>\n";
     }
     h << "</table>\n";
 }
@@ -228,11 +217,11 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
     else if (hiddenTests)
         h << "<p>Visible tests only: " << hiddenTests << " tests on hidden scenes are graded too; "
              "they are shown after the due date.</p>\n";
-    h << "<p>Reference: " << escape(s.referenceMode) << ". Heat-maps: black = equal, blue to cyan = "
+    h << "<p>Reference: " << htmlEscape(s.referenceMode) << ". Heat-maps: black = equal, blue to cyan = "
          "within tolerance, yellow to red = outside it (1&times; to 1000&times; the tolerance). "
          "Click an image for its full size.</p>\n";
     for (const auto& w : s.warnings)
-        if (staff || !namesHidden(w)) h << "<p><b>warning:</b> " << escape(w) << "</p>\n";
+        if (staff || !namesHidden(w)) h << "<p><b>warning:</b> " << htmlEscape(w) << "</p>\n";
 
     // Summary per stage.
     h << "<h2>Summary</h2>\n<table><tr><th>stage</th><th>points</th><th>tests passed</th><th>lost on</th></tr>\n";
@@ -244,7 +233,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
             if (t.stage != stage || !shown(t.hidden)) continue;
             got += t.score, of += t.maxScore, ++n;
             if (!t.lostPoints()) ++passed;
-            else lostOn += (lostOn.empty() ? "" : ", ") + escape(t.scene) + (t.hidden ? " (hidden)" : "");
+            else lostOn += (lostOn.empty() ? "" : ", ") + htmlEscape(t.scene) + (t.hidden ? " (hidden)" : "");
         }
         if (!n) continue;
         h << "<tr class=\"" << (passed == n ? "passed" : "failed") << "\"><td>" << stage << "</td><td>"
@@ -255,7 +244,7 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
     const auto findings = diagnose(s, findings_, staff);
     if (!findings.empty()) {
         h << "<h2>What the failures look like</h2>\n<ul>\n";
-        for (const auto& f : findings) h << "<li>" << escape(f) << "</li>\n";
+        for (const auto& f : findings) h << "<li>" << htmlEscape(f) << "</li>\n";
         h << "</ul>\n";
     }
 
@@ -264,23 +253,23 @@ std::string ReportWriter::page(const GradeSummary& s, bool staff) const {
     for (const auto& t : s.tests) {
         if (!shown(t.hidden)) continue;
         h << "<tr class=\"" << (t.lostPoints() ? "failed" : "passed") << "\"><td><a href=\"#"
-          << anchor(t.scene, t.stage) << "\">" << escape(t.scene) << "</a>"
+          << anchor(t.scene, t.stage) << "\">" << htmlEscape(t.scene) << "</a>"
           << (t.hidden ? " <span class=\"hidden-badge\">hidden</span>" : "") << "</td><td>" << t.stage
           << "</td><td>" << fixedDigits(t.score) << " / " << fixedDigits(t.maxScore) << "</td><td>"
-          << escape(t.output.substr(0, t.output.find('\n'))) << "</td></tr>\n";
+          << htmlEscape(t.output.substr(0, t.output.find('\n'))) << "</td></tr>\n";
     }
     h << "</table>\n";
     for (const auto& t : s.tests) {
         if (!shown(t.hidden)) continue;
-        h << "<h2 id=\"" << anchor(t.scene, t.stage) << "\">" << escape(t.scene) << ": " << t.stage
+        h << "<h2 id=\"" << anchor(t.scene, t.stage) << "\">" << htmlEscape(t.scene) << ": " << t.stage
           << (t.hidden ? " <span class=\"hidden-badge\">hidden</span>" : "") << "</h2>\n<pre>"
-          << escape(t.output) << "</pre>\n";
+          << htmlEscape(t.output) << "</pre>\n";
         if (t.metrics.contains("robustness")) robustnessTable(h, t.metrics["robustness"]);
         for (const auto& e : entries_) {
             if (e.scene != t.scene || e.stage != t.stage) continue;
             // The staff page sits next to report/: public images are linked there.
             const std::string prefix = staff && !e.hidden ? "../report/" : "";
-            h << "<h3>" << escape(e.image) << "</h3><div class=\"imgs\">";
+            h << "<h3>" << htmlEscape(e.image) << "</h3><div class=\"imgs\">";
             auto fig = [&](const std::string& src, const std::string& fullSrc, const char* caption) {
                 if (src.empty()) {
                     h << "<figure><figcaption>" << caption << ": none</figcaption></figure>";
@@ -310,5 +299,6 @@ void ReportWriter::finish(const GradeSummary& s) {
     std::filesystem::create_directories(staffDir_);
     std::ofstream(staffDir_ / "index.html") << page(s, true);
 }
+
 
 }  // namespace sl::grader
