@@ -15,6 +15,8 @@
 #include "study_shard.h"
 #include "worker.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <iostream>
 
 namespace sl::cli {
@@ -91,6 +93,13 @@ void addGraderCommands(CLI::App& app, Context& ctx) {
                 std::cout << "; " << r.submissions << " submissions in " << (o.out / "scores.csv").string()
                           << ", " << (o.out / "index.html").string() << ", " << (o.out / "class.html").string();
             std::cout << "\n";
+            if (!r.cpuSeconds.empty()) {
+                std::vector<double> c = r.cpuSeconds;
+                std::sort(c.begin(), c.end());
+                std::fprintf(stderr, "CPU per submission (user + sys, its processes): median %.2f s, min %.2f, "
+                             "max %.2f over %zu; the reference's renders %.2f s\n", c[c.size() / 2], c.front(),
+                             c.back(), c.size(), r.referenceCpuSeconds);
+            }
             if (r.wroteGradebook && !r.missing.empty()) {
                 std::cout << r.missing.size() << " not graded yet:";
                 for (size_t i = 0; i < r.missing.size() && i < 10; ++i) std::cout << " " << r.missing[i];

@@ -10,6 +10,7 @@
 #include "jobs.h"
 #include "paths.h"
 #include "points.h"
+#include "phase_clock.h"
 #include "report.h"
 #include "results.h"
 #include "rubric.h"
@@ -55,16 +56,6 @@ struct Schedule {
     std::vector<size_t> references, stages, finals;
 };
 
-// Phase times on stderr with SHADOWLAB_GRADER_TIMING=1 (docs/performance.md).
-struct Stopwatch {
-    std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
-    bool on = std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr;
-    void lap(const char* what) {
-        const auto now = std::chrono::steady_clock::now();
-        if (on) std::cerr << "grade: " << what << ": " << std::chrono::duration<double>(now - last).count() << " s\n";
-        last = now;
-    }
-};
 
 std::string jobName(const Job& j) { return j.row ? j.row->name : "reference"; }
 
@@ -81,15 +72,17 @@ public:
     Grading(const GradeOptions& o, const Rubric& r) : o_(o), rubric_(r) {}
 
     GradeSummary run() {
+        PhaseClock clock("grade");
+        clock.lap("start");
         GradeSummary s;
         takeSubmission(s);
         checkGoldens(s);
         const Schedule schedule = planJobs();
-        Stopwatch clock;
+        clock.lap("intake and plan");
         renderReferences(schedule.references);
         clock.lap("reference renders");
         renderStages(schedule);
-        clock.lap("stage renders (and scores)");
+        clock.lap("stage renders (waiting for workers) and scores");
         renderWarnings(s);
         total(s);
         clock.lap("comparisons and report");

@@ -37,7 +37,7 @@ vec4 satBoxAverage(sampler2D sat, vec2 center, vec2 boxSize)
     //     weights with only about 8 bits, far too few for sums this large.
     //  3. The box sum is the inclusion-exclusion of the four corner sums:
     //         S(x1, y1) - S(x0, y1) - S(x1, y0) + S(x0, y0).
-    //  4. Divide by the clipped area (and decide what a box with no area returns).
+    //  4. Divide by the clipped area; a box with no area left returns vec4(0).
     // Precision: the corners are sums of up to W·H moments, and a small box is the difference
     // of nearly equal ones: float32 is far too coarse for that (double is not).
     // Speed (docs/performance.md): the lighting pass calls this per pixel with boxes from 1 to

@@ -19,6 +19,7 @@
 #include <fstream>
 #include <iostream>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace sl::grader {
@@ -105,15 +106,26 @@ fs::path referenceRenders(const GradeOptions& base, const std::string& setup) {
     const fs::path done = base.out / (".reference-" + setup.substr(0, 16));
     std::error_code ec;
     if (fs::is_regular_file(done / "times.json", ec)) return done;
-    const fs::path part = base.out / (".reference-part-" + std::to_string(::getpid()));
+    char host[256] = "host";
+    ::gethostname(host, sizeof host - 1);
+    const std::string me = std::string(host) + "-" + std::to_string(::getpid());  // shards on many nodes
+    const fs::path part = base.out / (".reference-part-" + me);
     fs::remove_all(part, ec);
     std::cerr << "rendering the reference scenes once...\n";
     GradeOptions r = base;
-    r.out = base.out / (".reference-work-" + std::to_string(::getpid()));
+    r.out = base.out / (".reference-work-" + me);
     renderReferenceImages(r, part);
     fs::rename(part, done, ec);
     if (ec) fs::remove_all(part, ec);  // another shard's renders came first: the same images
     return done;
+}
+
+// User + sys of this process's reaped children (and theirs).
+double childrenCpuSeconds() {
+    struct rusage u {};
+    ::getrusage(RUSAGE_CHILDREN, &u);
+    auto secs = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    return secs(u.ru_utime) + secs(u.ru_stime);
 }
 
 bool reservedName(const std::string& name) {
@@ -153,8 +165,10 @@ BatchOutcome gradeBatch(const BatchOptions& batch, const GradeOptions& base) {
     }
 
     GradeOptions shared = base;
+    const double cpuBefore = childrenCpuSeconds();
     if (!todo.empty() && resolveReferenceMode(base.reference) == "live")
         shared.referenceImages = referenceRenders(base, setup);
+    outcome.referenceCpuSeconds = childrenCpuSeconds() - cpuBefore;
     std::vector<ChildSpec> specs;
     for (size_t i : todo) {
         GradeOptions o = shared;
@@ -198,6 +212,7 @@ BatchOutcome gradeBatch(const BatchOptions& batch, const GradeOptions& base) {
         row.digest = digests[i];
         storeRow(base.out, names[i], row);
         ++outcome.graded;
+        outcome.cpuSeconds.push_back(c.cpuSeconds);
     };
     size_t done = 0;
     if (!todo.empty()) {

@@ -18,6 +18,8 @@ struct BatchOutcome {
     size_t graded = 0, reused = 0;     // this run's share: graded now, or stored already
     std::vector<std::string> missing;  // no row under its digest (another shard's, or stopped)
     bool wroteGradebook = false;       // scores.csv, index.html, class.html (not for a shard)
+    std::vector<double> cpuSeconds;    // user + sys of each submission graded now (its processes)
+    double referenceCpuSeconds = 0.0;  // the reference's renders, when they were made now
 };
 
 // Grades each subfolder of DIR into OUT/<name>/ (results.json, report/, row.json), N at a

@@ -266,7 +266,8 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
         for (size_t k = 0; k < running.size();) {
             Running& r = running[k];
             int status = 0;
-            pid_t w = ::waitpid(r.pid, &status, WNOHANG);
+            struct rusage usage {};
+            pid_t w = ::wait4(r.pid, &status, WNOHANG, &usage);
             const auto elapsed = Clock::now() - r.start;
             ChildResult& res = results[r.index];
             if (w == 0 && elapsed < std::chrono::duration<double>(limitOf(r.index))) {
@@ -275,7 +276,7 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
             }
             if (w == 0) {  // over time: kill the whole group, then reap
                 ::kill(-r.pid, SIGKILL);
-                ::waitpid(r.pid, &status, 0);
+                ::wait4(r.pid, &status, 0, &usage);
                 res.kind = ChildResult::TimedOut;
             } else if (WIFSIGNALED(status)) {
                 res.kind = ChildResult::Signalled;
@@ -286,6 +287,8 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
             }
             ::kill(-r.pid, SIGKILL);  // leftovers of the group, if any
             res.seconds = std::chrono::duration<double>(elapsed).count();
+            auto secs = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+            res.cpuSeconds = secs(usage.ru_utime) + secs(usage.ru_stime);
             res.log = readLog(specs[r.index].logPath);
             for (const auto& [from, to] : specs[r.index].scrub) replaceAll(res.log, from, to);
             if (res.kind == ChildResult::TimedOut && !specs[r.index].group.empty())

@@ -40,6 +40,7 @@ struct ChildResult {
     int exitCode = -1;
     int signal = 0;
     double seconds = 0.0;
+    double cpuSeconds = 0.0;    // user + sys, its reaped descendants included (wait4)
     double limitSeconds = 0.0;  // the time limit it ran under
     std::string limitNote;      // ChildSpec::limitNote
     bool skipped = false;       // not run: its group timed out before (kind TimedOut)

@@ -21,6 +21,7 @@
 #include "gl_context.h"
 #include "msm_robustness.h"
 #include "pass_plan.h"
+#include "phase_clock.h"
 #include "probe.h"
 #include "paths.h"
 #include "raw_image.h"
@@ -135,8 +136,11 @@ void runWorker(const WorkerArgs& a) {
     const std::string stageName = a.stage ? a.stage->name : "reference";
     if (const char* fault = std::getenv("SHADOWLAB_GRADER_FAULT"); fault && stageName == fault)
         std::raise(SIGSEGV);
+    PhaseClock clock("worker");
+    clock.lap("start (fork or exec)");
     Scene scene = loadScene(a.scene);
     auto context = createContext(parseBackendKind(a.backend));
+    clock.lap("scene and GL context");
     WorkerResult out;
     out.stage = stageName;
     const ContextInfo& info = context->info();
@@ -168,6 +172,7 @@ void runWorker(const WorkerArgs& a) {
     }
     Renderer renderer(makeLibrary(a));
     RenderResult result;
+    clock.lap("shader sources");
     std::vector<std::string> wanted;
     if (is(a, Stage::Gaussian) || is(a, Stage::Sat)) {
         // The building blocks on the reference moments; first shadowing light only.
@@ -191,6 +196,7 @@ void runWorker(const WorkerArgs& a) {
         }
         gl::Finish();
         const Image& filtered = result.images["moments_filtered"] = dst.read();
+        clock.lap("filter passes (compile, dispatch) and read-back");
         if (sat && fx.satPerPixel)  // satKernelTexels on the same moments (sat_kernel_ladder.h)
             result.images[kSatKernelImage] = satKernelLadder(makeLibrary(a), scene, input);
         // Which of the stage's functions is the stub, each probed alone (a stub table makes a
@@ -212,6 +218,7 @@ void runWorker(const WorkerArgs& a) {
         // Lighting only, from the reference's filtered moments (a file: isolated with the
         // goldens alone), sampled bilinearly whatever the scene's filter.
         result = renderFromMoments(renderer, scene, readAnyImage(a.input));
+        clock.lap("lighting (compile, passes) and read-back");
     } else {
         PassPlan plan;
         if (is(a, Stage::Moments)) {
@@ -225,7 +232,10 @@ void runWorker(const WorkerArgs& a) {
             // what finds a stub satBoxAverage ("not implemented", docs/grading.md, "Speed").
             plan = planPasses(scene, {.resolveSat = true});
         }
+        renderer.compilePrograms(scene, plan);
+        clock.lap("shader compile (JIT)");
         result = renderer.render(scene, plan);
+        clock.lap("passes and read-back");
         completeStubNotes(makeLibrary(a), plan, result);  // every stub the render runs, by name
         if (is(a, Stage::Moments))  // relativeDepth outside [near, far] too (depth_ladder.h)
             result.images[kDepthLadderImage] =
@@ -245,6 +255,7 @@ void runWorker(const WorkerArgs& a) {
                 }
         }
     }
+    clock.lap("stage extras (ladders, probes, isolated render)");
     fs::create_directories(a.out);
     for (const auto& [name, image] : result.images) {
         if (isImage(name, ImageKind::Sat)) continue;  // the table itself is never compared
@@ -263,6 +274,7 @@ void runWorker(const WorkerArgs& a) {
     out.scene = scene.name;
     for (const auto& n : result.stubNotes) out.stubNotes.push_back(stubNote(n));
     std::ofstream(fs::path(a.out) / kWorkerResultFile) << out.toJson().dump(2) << "\n";
+    clock.lap("image files (.raw)");
 }
 
 int workerMain(const WorkerArgs& a) {
