@@ -19,21 +19,25 @@
 // (1.6 -> 1.25 copies at r = 8). A shared-memory tile, the classic GPU design, is slower here:
 // llvmpipe emulates shared memory and barriers per lane.
 //
-// Work-group shape 64 x 1: llvmpipe runs 8 consecutive invocations (x fastest) as the lanes of
+// Work-group shape 32 x 2: llvmpipe runs 8 consecutive invocations (x fastest) as the lanes of
 // one AVX2 vector (4 at 128 bits). In the y pass those lanes read 8 neighbouring texels of a
 // row (two 64-byte cache lines) and consecutive vectors continue along the row, which the
 // CPU's prefetcher follows; 8 x 8 groups walk down columns instead (one new 16 KiB-strided
 // line per load): their y pass cost 3.5-4.3 copies at r = 8 on an AMD EPYC, 1.3-1.5 here.
+// 32 wide, not 64: an x-pass group spans 32 x T = 256 texels of a row, and on a map narrower
+// than a group's span the rest of the group only tests its bounds (64 x 1 on 256²: half of
+// every x group idle, 1.87 copies in instructions at r = 8 against 1.11 now); 2 rows keep 64
+// invocations a group. From 512² up the two shapes cost the same (30.48 / 30.46 M instr.).
 //
 // Group order, y pass (bandedGroup): a texel read by this group is read again by the group 8
 // rows below. In llvmpipe's order (x fastest) that group runs a whole strip of the image later
 // (width x (8 + 2r) texels: 640 KiB at 1024² and r = 16, 1.3 MiB at 2048²), so the texel comes
-// back from L3 wherever L2 is smaller. Walking the groups in bands 4 groups (256 texels) wide
+// back from L3 wherever L2 is smaller. Walking the groups in bands 8 groups (256 texels) wide
 // bounds that distance by the band, not the image: r = 16 y went from 3.2-5.1 to 2.3-2.5
 // copies in most runs on a Zen 3 EPYC (512 KiB L2), and 3.75 -> 2.2 at 2048². Narrower bands
 // lose the prefetched runs along each row (a band of one group cost more at r = 8).
 
-layout(local_size_x = 64, local_size_y = 1) in;
+layout(local_size_x = 32, local_size_y = 2) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
@@ -85,7 +89,7 @@ void writeOutput(int j, ivec2 first, ivec2 last)
 // groups, left to right within a band row, band rows top to bottom, band after band; in the x
 // pass the order stays llvmpipe's. Float division: llvmpipe has no vector integer division
 // (it would divide lane by lane), and the quotients are exact far beyond any group count.
-const int kBand = 4;
+const int kBand = 8;  // groups: 256 texels
 ivec2 bandedGroup()
 {
     ivec2 groups = ivec2(gl_NumWorkGroups.xy);

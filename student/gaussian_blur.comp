@@ -29,12 +29,14 @@
 // reports as "not implemented yet" and previews in magenta. A correct solution never writes
 // a negative value. (This stub writes one texel per invocation: T = 1.)
 
-// Work groups of 64 x 1, kept from the reference's measurements (docs/performance.md): llvmpipe
+// Work groups of 32 x 2, kept from the reference's measurements (docs/performance.md): llvmpipe
 // runs 8 consecutive invocations along x as the lanes of one SIMD vector, so in both passes
 // the lanes read neighbouring texels of a row (whole 64-byte cache lines) and the next vectors
 // continue along it. 8 x 8 groups walk down columns instead (a new line 16 KiB away per load):
-// 3.4-4.4 copy passes for the y pass at r = 8 against 1.3-1.6 in rows.
-layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+// 3.4-4.4 copy passes for the y pass at r = 8 against 1.3-1.6 in rows. Keep a group's span
+// along x (local_size_x · T in the x pass) within the map's width: `bench` times 256² maps,
+// and the lanes of a group past the map's edge only test their bounds.
+layout(local_size_x = 32, local_size_y = 2, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;

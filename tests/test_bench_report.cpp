@@ -114,19 +114,23 @@ TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
     }
     // The goals of docs/performance.md, in instructions: checked on that clock only (this
     // test runs on the CPU clock), and there the verdict follows the ratio either way.
-    EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=8, y")->goal, 2.0);
-    EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=16, x")->goal, 2.7);
+    EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=8, y")->goal, 1.2);
+    EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=16, x")->goal, 1.55);
     EXPECT_DOUBLE_EQ(findRow(report, "sat, rows + columns")->goal, 2.6);
     BenchRow row = *findRow(report, "gaussian r=8, x");
     EXPECT_FALSE(row.goalChecked);
     row.ratio = 5.0;
-    EXPECT_EQ(benchVerdict(row), "≤ 2.0 in instructions (--exact)");
+    EXPECT_EQ(benchVerdict(row), "≤ 1.2 in instructions (--exact)");
     EXPECT_NE(formatBenchReport(report).find("./kit bench --exact"), std::string::npos);
     row.goalChecked = true;
-    row.ratio = 1.99;
-    EXPECT_EQ(benchVerdict(row), "✓ ≤ 2.0");
-    row.ratio = 2.01;
-    EXPECT_EQ(benchVerdict(row), "✗ > 2.0");
+    row.ratio = 1.19;
+    EXPECT_EQ(benchVerdict(row), "✓ ≤ 1.2");
+    row.ratio = 1.21;
+    EXPECT_EQ(benchVerdict(row), "✗ > 1.2");
+    BenchRow wide = *findRow(report, "gaussian r=16, y");
+    wide.goalChecked = true;
+    wide.ratio = 1.56;
+    EXPECT_EQ(benchVerdict(wide), "✗ > 1.55");  // two digits where the goal has them
 
     const auto json = nlohmann::json::parse(benchReportJson(report));
     ASSERT_EQ(json["rows"].size(), report.rows.size());

@@ -26,15 +26,19 @@ add("grade process", open(stderr).read())
 work = glob.glob(os.path.join(out, ".work-*"))[0]
 for log in glob.glob(os.path.join(work, "**", "log.txt"), recursive=True):
     rel = os.path.relpath(log, work).split(os.sep)
-    who = "reference workers" if rel[0] == "ref" else "submission workers"
+    who = "reference workers" if rel[0] == "ref" else f"{rel[1]} workers" if len(rel) > 2 else f"{rel[0]} worker"
     add(who, open(log, errors="replace").read())
 u, s, e = open(timing).read().split()[1:4]
 print("| process | phase | processes | user s | sys s |")
 print("|---|---|---:|---:|---:|")
 tot = [0.0, 0.0]
-for (who, phase), (n, us, sy) in rows.items():
+per = {}
+for (who, phase), (n, us, sy) in sorted(rows.items()):
     print(f"| {who} | {phase} | {n} | {us:.2f} | {sy:.2f} |")
     tot[0] += us; tot[1] += sy
+    p = per.setdefault(who, [0, 0.0, 0.0]); p[0] = max(p[0], n); p[1] += us; p[2] += sy
+for who, (n, us, sy) in sorted(per.items()):
+    print(f"| {who} | all its phases | {n} | {us:.2f} | {sy:.2f} |")
 print(f"| all | phases counted | | {tot[0]:.2f} | {tot[1]:.2f} |")
 print(f"| all | whole run (/usr/bin/time; {e} s wall) | | {float(u):.2f} | {float(s):.2f} |")
 PY

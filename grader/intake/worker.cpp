@@ -168,6 +168,7 @@ void runWorker(const WorkerArgs& a) {
                           {"failing", failing},
                           {"summary", report.summary(20)}};
         std::ofstream(fs::path(a.out) / kWorkerResultFile) << out.toJson().dump(2) << "\n";
+        clock.lap("the hard-case catalogue");
         return;
     }
     Renderer renderer(makeLibrary(a));
