@@ -350,7 +350,7 @@ private:
         }
         // A scoring error fails the grade (results.json says why), once every child has ended.
         std::exception_ptr failed;
-        auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb}, o_.jobs,
+        auto results = runChildren(specs, {kTimeoutDefault, o_.memoryMb, true}, o_.jobs,
                                    [&](size_t i, const ChildResult& r) {
                                        Job& j = jobs_[index[i]];
                                        j.child = r;

@@ -6,7 +6,10 @@
 Submission i (s001_..., in name order) is, in turn: a copy of reference/, the untouched student
 kit, then each entry of tests/submissions/catalogue.json (reference/ with the entry's files on
 top: correct alternatives, mutants, fragile variants), and with --hostile also a render that
-never ends (a loop in moments.glsl) and a folder holding a 50 MB file; then round again. So a
+never ends (a loop in moments.glsl), a folder holding a 50 MB file, a shader whose macros expand
+to 2^26 terms (the compiler runs out of time or memory) and a msm.glsl that is a link to /etc/passwd; then round
+again. (A fork bomb has no place to go: a submission is shader sources, nothing of it runs on the
+CPU but the driver's compiler.) So a
 batch's scores can be checked against each entry's known verdict, and its cost measured on a
 realistic mix (docs/performance.md)."""
 import json, os, shutil, sys
@@ -25,6 +28,8 @@ def kinds(hostile):
     if hostile:
         yield "hostile_hang", "hang"
         yield "hostile_50mb", "big"
+        yield "hostile_macro_bomb", "bomb"
+        yield "hostile_link", "link"
 
 
 def make(folder, spec):
@@ -43,6 +48,16 @@ def make(folder, spec):
         text = text.replace(head, head + "    for (int i = 0; i < 100000; ++i)\n"
                             "        for (int j = 0; j < 100000; ++j) z = fract(z * 1.0001 + 0.1);\n")
         open(path, "w").write(text)
+    elif spec == "bomb":
+        path = os.path.join(folder, "msm.glsl")
+        bomb = "#define X0 zf\n" + "".join(f"#define X{k} (X{k - 1} + X{k - 1})\n" for k in range(1, 27))
+        head = "float momentShadowIntensity(vec4 b, float zf)\n{\n"
+        text = open(path).read()
+        assert head in text, "reference/msm.glsl changed"
+        open(path, "w").write(bomb + text.replace(head, head + "    zf = X26;\n"))
+    elif spec == "link":
+        os.remove(os.path.join(folder, "msm.glsl"))
+        os.symlink("/etc/passwd", os.path.join(folder, "msm.glsl"))
     elif spec == "big":
         with open(os.path.join(folder, "screenshot.bin"), "wb") as f:
             f.write(os.urandom(50 << 20))

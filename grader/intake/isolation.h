@@ -52,6 +52,12 @@ struct ChildResult {
 struct Limits {
     double timeoutSeconds = 20.0;
     long memoryMb = 4096;
+    // Forked children of this call may run one after another in the same process, a runner
+    // (at most `parallel` at a time): its libraries, driver screen and heap pages are set up
+    // once, not per child. A runner that crashes or times out costs the child it was running
+    // only; the next child gets a fresh runner. For one submission's renders, never for
+    // submissions of a batch. SHADOWLAB_GRADER_RUNNERS=0 turns it off.
+    bool reuseProcesses = false;
 };
 
 // Every child runs with MESA_SHADER_CACHE_DISABLE=true (Mesa's cache is the only file a

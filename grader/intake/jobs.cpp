@@ -139,7 +139,7 @@ void renderReferenceImages(const GradeOptions& o, const fs::path& dir) {
     }
     nlohmann::json times = nlohmann::json::object();
     preloadDriver(parseBackendKind(o.backend));  // once here, not in every forked child
-    const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb}, o.jobs);
+    const auto results = runChildren(specs, {referenceTimeout(o), o.memoryMb, true}, o.jobs);
     std::error_code ec;
     fs::remove_all(workDir(o), ec);  // the shader cache of these renders
     fs::remove(o.out, ec);           // the batch's scratch folder, if nothing else is there
