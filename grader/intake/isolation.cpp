@@ -6,6 +6,7 @@
 // A worker is forked without exec while the grader has one thread (ChildSpec::run): the same
 // fresh GL state, without re-linking the program's libraries.
 #include "isolation.h"
+#include "phase_clock.h"
 
 #include <fcntl.h>
 #include <malloc.h>
@@ -166,6 +167,7 @@ void setUpChild(const Limits& limits, const char* log) {
         for (const auto& [name, value] : childSettings(spec)) ::setenv(name.c_str(), value.c_str(), 1);
         rusage before{}, after{};
         ::getrusage(RUSAGE_SELF, &before);
+        PhaseClock::jobStarts();
         Ack ack{1, 0.0};
         try {
             ack.code = spec.run();

@@ -1,7 +1,7 @@
 // phase_clock.h: where a grade's CPU goes. With SHADOWLAB_GRADER_TIMING=1 each lap prints one
 // line on stderr, "phase <process> <what>: <wall> s wall, <user> s user, <sys> s sys", the CPU
 // of this process since the last lap (the first lap: since the process started, so a worker's
-// "start" is its fork or exec). A grade's workers write theirs to their logs;
+// "start" is its fork or exec; in a runner, since its job began: jobStarts). A grade's workers write theirs to their logs;
 // tools/grade_phases.sh adds them up into the table of docs/performance.md.
 #pragma once
 
@@ -17,7 +17,15 @@ namespace sl::grader {
 class PhaseClock {
 public:
     explicit PhaseClock(std::string process)
-        : process_(std::move(process)), on_(std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr) {}
+        : process_(std::move(process)), on_(std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr),
+          user_(jobUser_), sys_(jobSys_) {}
+    // A runner calls this as each job begins (grader/intake/isolation.cpp): the job's first lap
+    // counts from here, not from the runner's start with every earlier job in it.
+    static void jobStarts() {
+        struct rusage u {};
+        ::getrusage(RUSAGE_SELF, &u);
+        jobUser_ = seconds(u.ru_utime), jobSys_ = seconds(u.ru_stime);
+    }
     void lap(const char* what) {
         if (!on_) return;
         struct rusage u {};
@@ -34,7 +42,8 @@ private:
     static double seconds(const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); }
     std::string process_;
     bool on_;
-    double user_ = 0.0, sys_ = 0.0;
+    double user_, sys_;
+    static inline double jobUser_ = 0.0, jobSys_ = 0.0;
     std::chrono::steady_clock::time_point wall_ = std::chrono::steady_clock::now();
 };
 
