@@ -105,6 +105,12 @@ double costEnd() {
 
 bool costCountsInstructions() { return exactClock() == "instructions"; }
 
+std::string costUnit() {
+    if (exactClock() == "instructions") return "M instr";
+    if (exactClock() == "cycles") return "M cycles";
+    return "CPU ms";
+}
+
 std::string costMethod() {
     const char* threads = std::getenv("LP_NUM_THREADS");
     const std::string n = threads && *threads

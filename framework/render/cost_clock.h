@@ -33,6 +33,9 @@ double costEnd();
 // (llvmpipe's CPU time grows with the threads it keeps busy, so figures compare at one count).
 std::string costMethod();
 
+// The unit of costEnd's figures, short, for a column: "CPU ms", "M instr" or "M cycles".
+std::string costUnit();
+
 // True under tools/cost_exact.sh without --cycles: costs are instructions, the clock the
 // bench's goals are stated on.
 bool costCountsInstructions();

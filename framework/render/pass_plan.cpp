@@ -325,7 +325,7 @@ std::string programAndRoles(const PlannedPass& p) {
 }  // namespace
 
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
-                        const std::vector<double>* millis) {
+                        const std::vector<double>* millis, const std::string& unit) {
     std::string out = "plan for " + scene.name + " (" + std::to_string(plan.passes.size()) +
                       " passes, technique " + toString(plan.effect.technique) + ", filter " +
                       toString(plan.effect.filter) + ", moments " +
@@ -368,7 +368,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
                       p.why.c_str());
         out += line;
         if (millis && i < millis->size()) {
-            std::snprintf(line, sizeof line, " %9.2f ms", (*millis)[i]);
+            std::snprintf(line, sizeof line, " %9.2f %s", (*millis)[i], unit.c_str());
             out += line;
             total += (*millis)[i];
         }
@@ -379,7 +379,7 @@ std::string explainPlan(const Scene& scene, const PassPlan& plan,
     std::snprintf(line, sizeof line, "  shadow-map memory %.2f MiB\n", plan.bytes() / 1048576.0);
     out += line;
     if (millis) {
-        std::snprintf(line, sizeof line, "  total %44.2f ms\n", total);
+        std::snprintf(line, sizeof line, "  total %44.2f %s\n", total, unit.c_str());
         out += line;
     }
     return out;

@@ -135,8 +135,8 @@ bool kernelReachesImage(const ShadowEffect& fx);
 // The plan as text: technique and parameters, then one numbered line per pass with the format
 // and memory it writes and why it runs, and under it the program it runs (files and defines)
 // and the roles it reads and writes; then what it left out and why; with `millis` (one per
-// pass) the time of each.
+// pass) the cost of each, in `unit` (wall ms for a render; the cost clock's unit in a study).
 std::string explainPlan(const Scene& scene, const PassPlan& plan,
-                        const std::vector<double>* millis = nullptr);
+                        const std::vector<double>* millis = nullptr, const std::string& unit = "ms");
 
 }  // namespace sl

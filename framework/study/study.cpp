@@ -432,7 +432,7 @@ StudySummary runStudy(const StudyOptions& o, std::ostream& log) {
         if (o.explain) {
             if (o.progress) std::cerr << "\n";
             log << "== " << what << "  (map " << row.mapKey << "; reused: " << row.reused << ")\n"
-                << explainPlan(s, plan, &medians);
+                << explainPlan(s, plan, &medians, costUnit());
         }
     }
     if (o.progress) {

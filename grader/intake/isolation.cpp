@@ -397,9 +397,38 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
         if (done)
             for (size_t i : now) done(i, results[i]);
     };
+    // How a child (or the runner it ran in) ended: over time (w == 0) the whole group is
+    // killed and reaped; else its wait status. The CPU is its rusage.
+    auto settle = [](ChildResult& res, pid_t pid, pid_t w, int status, struct rusage& usage) {
+        if (w == 0) {
+            ::kill(-pid, SIGKILL);
+            ::wait4(pid, &status, 0, &usage);
+            res.kind = ChildResult::TimedOut;
+        } else if (WIFSIGNALED(status)) {
+            res.kind = ChildResult::Signalled;
+            res.signal = WTERMSIG(status);
+        } else {
+            res.kind = ChildResult::Exited;
+            res.exitCode = WEXITSTATUS(status);
+        }
+        res.cpuSeconds = cpuSecondsOf(usage);
+    };
+    bool progressed = false;
+    // A child has ended: its time and log, its group's timeout, and it leaves `running`.
+    auto finish = [&](size_t k, ChildResult& res, Clock::duration elapsed) {
+        const size_t index = running[k].index;
+        res.seconds = std::chrono::duration<double>(elapsed).count();
+        res.log = readLog(specs[index].logPath);
+        for (const auto& [from, to] : specs[index].scrub) replaceAll(res.log, from, to);
+        if (res.kind == ChildResult::TimedOut && !specs[index].group.empty())
+            timedOutGroups.emplace(specs[index].group, res);
+        ended.push_back(index);
+        running.erase(running.begin() + std::ptrdiff_t(k));
+        progressed = true;
+    };
     while (next < specs.size() || !running.empty()) {
         handOver();
-        bool progressed = false;
+        progressed = false;
         for (size_t k = 0; k < running.size();) {
             Running& r = running[k];
             if (r.runner >= 0) {
@@ -421,31 +450,13 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
                     res.cpuSeconds = ack.cpuSeconds;
                     runner.busy = false;
                 } else {
-                    if (w == 0) {  // over time: the runner and all it started
-                        ::kill(-runner.pid, SIGKILL);
-                        ::wait4(runner.pid, &status, 0, &usage);
-                        res.kind = ChildResult::TimedOut;
-                    } else if (WIFSIGNALED(status)) {
-                        res.kind = ChildResult::Signalled;
-                        res.signal = WTERMSIG(status);
-                    } else {
-                        res.kind = ChildResult::Exited;
-                        res.exitCode = WEXITSTATUS(status);
-                    }
-                    res.cpuSeconds = cpuSecondsOf(usage);
+                    settle(res, runner.pid, w, status, usage);
                     runner.pid = -1;  // reaped: only its pipes and its group are left
                     ::close(runner.jobs), ::close(runner.acks);
                     ::kill(-r.pid, SIGKILL);
                     runner = Runner();
                 }
-                res.seconds = std::chrono::duration<double>(elapsed).count();
-                res.log = readLog(specs[r.index].logPath);
-                for (const auto& [from, to] : specs[r.index].scrub) replaceAll(res.log, from, to);
-                if (res.kind == ChildResult::TimedOut && !specs[r.index].group.empty())
-                    timedOutGroups.emplace(specs[r.index].group, res);
-                ended.push_back(r.index);
-                running.erase(running.begin() + std::ptrdiff_t(k));
-                progressed = true;
+                finish(k, res, elapsed);
                 continue;
             }
             int status = 0;
@@ -457,27 +468,9 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
                 ++k;
                 continue;
             }
-            if (w == 0) {  // over time: kill the whole group, then reap
-                ::kill(-r.pid, SIGKILL);
-                ::wait4(r.pid, &status, 0, &usage);
-                res.kind = ChildResult::TimedOut;
-            } else if (WIFSIGNALED(status)) {
-                res.kind = ChildResult::Signalled;
-                res.signal = WTERMSIG(status);
-            } else {
-                res.kind = ChildResult::Exited;
-                res.exitCode = WEXITSTATUS(status);
-            }
+            settle(res, r.pid, w, status, usage);
             ::kill(-r.pid, SIGKILL);  // leftovers of the group, if any
-            res.seconds = std::chrono::duration<double>(elapsed).count();
-            res.cpuSeconds = cpuSecondsOf(usage);
-            res.log = readLog(specs[r.index].logPath);
-            for (const auto& [from, to] : specs[r.index].scrub) replaceAll(res.log, from, to);
-            if (res.kind == ChildResult::TimedOut && !specs[r.index].group.empty())
-                timedOutGroups.emplace(specs[r.index].group, res);
-            ended.push_back(r.index);
-            running.erase(running.begin() + std::ptrdiff_t(k));
-            progressed = true;
+            finish(k, res, elapsed);
         }
         if (!progressed) std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
