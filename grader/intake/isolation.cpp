@@ -147,8 +147,8 @@ void setUpChild(const Limits& limits, const char* log) {
     }
 }
 
-// The runner's loop: each job's log on its stdout and stderr, its settings in the environment,
-// its `run`, then the ack. Ends (exit 0) when the job pipe closes.
+// The runner's loop: each job's log on its stdout and stderr, its `run`, then the ack (its
+// settings are the runner's, set once by startRunner). Ends (exit 0) when the job pipe closes.
 [[noreturn]] void runnerLoop(const std::vector<ChildSpec>& specs, int jobs, int acks) {
     // Freed heap pages stay for the next job (no trim, no mmap for a map-sized block): the
     // kernel zeroes each page once per runner instead of once per render.
@@ -164,10 +164,9 @@ void setUpChild(const Limits& limits, const char* log) {
             ::dup2(fd, 2);
             ::close(fd);
         }
-        for (const auto& [name, value] : childSettings(spec)) ::setenv(name.c_str(), value.c_str(), 1);
         rusage before{}, after{};
         ::getrusage(RUSAGE_SELF, &before);
-        PhaseClock::jobStarts();
+        PhaseClock::jobStarts(before);
         Ack ack{1, 0.0};
         try {
             ack.code = spec.run();
@@ -182,11 +181,11 @@ void setUpChild(const Limits& limits, const char* log) {
     }
 }
 
-// Forks a runner for `specs` (the caller checked forkIsSafe); false if it could not. The
-// runner closes the other runners' pipe ends: a copy of another's job pipe held open would
-// keep that runner from ever seeing its end of jobs.
+// Forks a runner for `specs` with `settings` in its environment (the caller checked
+// forkIsSafe); false if it could not. The runner closes the other runners' pipe ends: a copy
+// of another's job pipe held open would keep that runner from ever seeing its end of jobs.
 bool startRunner(Runner& r, const std::vector<Runner>& others, const std::vector<ChildSpec>& specs,
-                 const Limits& limits) {
+                 const Limits& limits, const std::vector<std::pair<std::string, std::string>>& settings) {
     int jobs[2], acks[2];
     if (::pipe2(jobs, O_CLOEXEC) != 0) return false;
     if (::pipe2(acks, O_CLOEXEC) != 0) {
@@ -203,6 +202,7 @@ bool startRunner(Runner& r, const std::vector<Runner>& others, const std::vector
         for (const Runner& o : others)
             if (o.pid > 0) ::close(o.jobs), ::close(o.acks);
         setUpChild(limits, "/dev/null");
+        for (const auto& [name, value] : settings) ::setenv(name.c_str(), value.c_str(), 1);
         runnerLoop(specs, jobs[0], acks[1]);
     }
     ::close(jobs[0]), ::close(acks[1]);
@@ -211,16 +211,18 @@ bool startRunner(Runner& r, const std::vector<Runner>& others, const std::vector
         return false;
     }
     ::fcntl(acks[0], F_SETFL, O_NONBLOCK);
-    r = {pid, jobs[1], acks[0], false, {}};
+    r = {pid, jobs[1], acks[0], false, settings};
     return true;
 }
 
+// Closes a runner's pipes (a live one ends its loop at EOF, or is killed), reaps it unless
+// `settle` already has, and kills what it left in its group.
 void stopRunner(Runner& r, bool kill) {
     if (r.pid <= 0) return;
     ::close(r.jobs), ::close(r.acks);
     if (kill) ::kill(-r.pid, SIGKILL);
     int status = 0;
-    ::waitpid(r.pid, &status, 0);
+    ::waitpid(r.pid, &status, 0);  // ECHILD if already reaped
     ::kill(-r.pid, SIGKILL);  // anything the runner left in its group
     r = Runner();
 }
@@ -358,8 +360,7 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
                 for (size_t k = 0; k < runners.size() && slot < 0; ++k)
                     if (runners[k].pid > 0 && !runners[k].busy && runners[k].settings == settings) slot = int(k);
                 auto start = [&](size_t k) {
-                    if (!forkIsSafe() || !startRunner(runners[k], runners, specs, limits)) return;
-                    runners[k].settings = settings;
+                    if (!forkIsSafe() || !startRunner(runners[k], runners, specs, limits, settings)) return;
                     slot = int(k);
                 };
                 for (size_t k = 0; k < runners.size() && slot < 0; ++k)
@@ -451,10 +452,7 @@ std::vector<ChildResult> runChildren(const std::vector<ChildSpec>& specs, const 
                     runner.busy = false;
                 } else {
                     settle(res, runner.pid, w, status, usage);
-                    runner.pid = -1;  // reaped: only its pipes and its group are left
-                    ::close(runner.jobs), ::close(runner.acks);
-                    ::kill(-r.pid, SIGKILL);
-                    runner = Runner();
+                    stopRunner(runner, true);
                 }
                 finish(k, res, elapsed);
                 continue;
