@@ -14,44 +14,37 @@
 // bits, so a box's corners cancel to ~1e-7 of an entry's size whatever the box.
 //
 // Invocation mapping: the framework dispatches 1 × ceil(lineCount / SAT_LINES) work groups of
-// SAT_CHUNKS × SAT_LINES invocations; a group owns SAT_LINES consecutive lines. Each line is
-// cut into contiguous chunks, one per invocation: the invocation sums its chunk, the chunk
-// totals go through shared memory, and after one barrier each invocation walks its chunk
-// again from the sum of the chunks before it. Work per line: 2n loads and n entry stores,
-// O(n). Any length n >= 1 works (trailing chunks of a short line are empty).
+// SAT_LANES × SAT_LINES invocations; a group owns SAT_LINES consecutive lines. One invocation
+// walks one whole line once, carrying the running sum S along it: n loads and n entry stores
+// per line, O(n), no shared memory and no barrier. A line of 1024 texels is a long walk, but
+// llvmpipe has only 2 threads × 8 lanes: a 1024² map's 1024 lines keep every lane busy. (A
+// GPU with thousands of lanes would want several invocations per line: sum chunks, share
+// their totals, walk again; that reads each texel twice and costs ~1.4× here.)
 //
-// Work-group shape (docs/performance.md, SAT): llvmpipe runs 8 consecutive invocations as
-// the lanes of one SIMD vector. Rows: the 8 lanes are 8 chunks of one row (8 rows at once
-// would be 16 KiB apart at 1024², all in one L1 set). Columns: the 8 lanes are 8
-// neighbouring columns, so each step down reads one run of a row.
-#define SAT_CHUNKS 8   // local_size_x
-#define SAT_LINES  32  // local_size_y: lines per work group (the framework's dispatch unit)
+// Lanes (docs/performance.md, SAT): llvmpipe runs 8 consecutive invocations along x as the
+// lanes of one SIMD vector, so the group's first SAT_LINES invocations (SAT_LINES / 8 vectors)
+// take its lines, 8 neighbouring lines to a vector, and the other vectors end at once (the
+// contract gives a group local_size_y lines, and a vector needs 8 of them). Columns: each step
+// down reads one 256-byte run of a row. Rows: lane k walks SAT_ROW_LAG · k texels behind lane
+// 0, so the 8 rows a vector reads at one step (16 KiB apart at 1024²) are not all in one L1 set.
+#define SAT_LANES   8   // local_size_x: one SIMD vector
+#define SAT_LINES   32  // local_size_y: lines per work group (the framework's dispatch unit)
+#define SAT_ROW_LAG 4   // texels (one 64-byte cache line of the moment map)
 
-layout(local_size_x = SAT_CHUNKS, local_size_y = SAT_LINES, local_size_z = 1) in;
+layout(local_size_x = SAT_LANES, local_size_y = SAT_LINES, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
 layout(binding = 1, rgba32f) uniform writeonly image2D uDestination;
 uniform ivec2 uDirection;  // (1, 0): prefix sums along rows; (0, 1): along columns
 uniform ivec2 uImageSize;  // the moment map's width and height (the table is twice as wide)
 
-// One chunk total per invocation.
-shared dvec4 sTotals[SAT_CHUNKS * SAT_LINES];
-
-// Chunk `chunk` of `chunks` along a line of length n: [begin, end) (trailing ones empty).
-ivec2 chunkRange(int chunk, int chunks, int n)
-{
-    int length = (n + chunks - 1) / chunks;
-    int begin = min(chunk * length, n);
-    return ivec2(begin, min(begin + length, n));
-}
-
-// Entry x of line `line`: the row pass reads the moment map, the column pass the row pass's
+// Entry i of line `line`: the row pass reads the moment map, the column pass the row pass's
 // two-texel entries.
-dvec4 loadEntry(bool alongRows, int line, int x)
+dvec4 loadEntry(bool alongRows, int line, int i)
 {
     if (alongRows)
-        return dvec4(imageLoad(uSource, ivec2(x, line)));
-    ivec2 t = ivec2(2 * line, x);
+        return dvec4(imageLoad(uSource, ivec2(i, line)));
+    ivec2 t = ivec2(2 * line, i);
     return dvec4(imageLoad(uSource, t)) + dvec4(imageLoad(uSource, t + ivec2(1, 0)));
 }
 
@@ -63,33 +56,31 @@ void storeEntry(ivec2 entry, dvec4 sum)
     imageStore(uDestination, ivec2(2 * entry.x + 1, entry.y), vec4(sum - dvec4(high)));
 }
 
+// Walks line `line` (n entries) once, storing S(i) = S(i - 1) + src(i) at each i, `lag` steps
+// behind a walk of `steps` steps. Called with a constant `alongRows`, so each pass compiles
+// to its own loop (a loop that tests the direction at every step costs ~12 % more).
+void walkLine(bool alongRows, int line, int n, int lag, int steps)
+{
+    dvec4 S = dvec4(0.0);
+    for (int step = 0; step < steps; ++step) {
+        int i = step - lag;
+        if (i < 0 || i >= n)
+            continue;
+        S += loadEntry(alongRows, line, i);
+        storeEntry(alongRows ? ivec2(i, line) : ivec2(line, i), S);
+    }
+}
+
 void main()
 {
     int local = int(gl_LocalInvocationIndex);
-    int lane = local % SAT_CHUNKS, slot = local / SAT_CHUNKS;
-    int firstLine = int(gl_WorkGroupID.y) * SAT_LINES;
-    bool alongRows = uDirection.x != 0;
-    int lineLength = alongRows ? uImageSize.x : uImageSize.y;
-    int lineCount  = alongRows ? uImageSize.y : uImageSize.x;
-    // Rows: row firstLine + slot, chunk `lane` of SAT_CHUNKS. Columns: the 8 lanes are 8
-    // neighbouring columns, the group's 32 columns 4 such runs; each column has 8 chunks.
-    int line  = alongRows ? firstLine + slot : firstLine + lane + SAT_CHUNKS * (slot % 4);
-    int chunk = alongRows ? lane : slot / 4;
-    bool live = line < lineCount;
-    ivec2 range = live ? chunkRange(chunk, SAT_CHUNKS, lineLength) : ivec2(0);
-
-    dvec4 total = dvec4(0.0);
-    for (int i = range.x; i < range.y; ++i)
-        total += loadEntry(alongRows, line, i);
-    sTotals[local] = total;
-    barrier();  // reached by every invocation: no early return above
-
-    // The sum of the chunks before this one, of the same line.
-    dvec4 running = dvec4(0.0);
-    for (int k = 0; k < chunk; ++k)
-        running += sTotals[alongRows ? slot * SAT_CHUNKS + k : (4 * k + slot % 4) * SAT_CHUNKS + lane];
-    for (int i = range.x; i < range.y; ++i) {
-        running += loadEntry(alongRows, line, i);
-        storeEntry(alongRows ? ivec2(i, line) : ivec2(line, i), running);
+    int line = int(gl_WorkGroupID.y) * SAT_LINES + local;
+    if (uDirection.x != 0) {
+        if (local < SAT_LINES && line < uImageSize.y)
+            walkLine(true, line, uImageSize.x, SAT_ROW_LAG * (local % SAT_LANES),
+                     uImageSize.x + SAT_ROW_LAG * (SAT_LANES - 1));
+    } else {
+        if (local < SAT_LINES && line < uImageSize.x)
+            walkLine(false, line, uImageSize.y, 0, uImageSize.y);
     }
 }

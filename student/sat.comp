@@ -23,19 +23,17 @@
 // Invocation mapping: the framework dispatches 1 × ceil(lineCount / local_size_y) work
 // groups, reading the local size you declare. Work group k owns lines k·local_size_y …
 // (local_size_y of them) along their whole length; how its invocations share them is
-// yours. The simplest plan: the local_size_x invocations of a group share one line and
-// gl_GlobalInvocationID.y is the line index. A line is a row when uDirection = (1, 0) and a
-// column when uDirection = (0, 1). The work must be O(n) per line. Lines past the image must
-// not be written.
+// yours (two plans below). With plan A, the local_size_x invocations of a group share
+// one line and gl_GlobalInvocationID.y is the line index. A line is a row when
+// uDirection = (1, 0) and a column when uDirection = (0, 1). The work must be O(n) per
+// line. Lines past the image must not be written.
 //
 // Stub value: until implemented, the pass writes -1 to every texel, which the framework
 // reports as "not implemented yet" and previews in magenta. Only a texel of exactly
 // (-1, -1, -1, -1) reads as the stub: a table stored with an offset may hold negative values.
 
-// 8 x 32, the reference's shape: llvmpipe runs 8 consecutive invocations as one SIMD vector.
-// Rows: let those 8 be 8 chunks of one row (8 rows at once share an L1 set at 1024²). Columns:
-// let them be 8 neighbouring columns, so each step down reads a run of one row
-// (docs/performance.md, SAT).
+// 8 x 32, the reference's shape: llvmpipe runs 8 consecutive invocations along x as one SIMD
+// vector, and a group owns local_size_y lines (docs/performance.md, SAT).
 layout(local_size_x = 8, local_size_y = 32, local_size_z = 1) in;
 
 layout(binding = 0, rgba32f) uniform readonly  image2D uSource;
@@ -52,15 +50,23 @@ void main()
     int  t          = int(gl_LocalInvocationID.x);
 
     // TODO: not implemented yet: sat.comp (prefix sums along a line)
-    // A work-efficient plan for the local_size_x invocations of a line:
-    //  1. split the line into local_size_x contiguous chunks; each invocation sums its chunk;
-    //  2. share the chunk totals through a `shared` array, barrier(), and give every chunk
-    //     its offset: the sum of the totals of the chunks before it;
-    //  3. each invocation walks its chunk again, writing offset + running sum.
-    // barrier() must be reached by every invocation of the work group: do not return early
-    // or branch around it. Make sure any line length works (1, 7, 1000, 4096, ...).
-    // Sums grow to ~width·height: think about float32 precision (see the handout); the row
-    // pass reads the moments (W × H), the column pass your row pass's 2W × H table.
+    // Two plans, both O(n) per line; pick one.
+    //  A. Several invocations per line (the classic parallel scan): split the line into
+    //     local_size_x contiguous chunks; each invocation sums its chunk; share the chunk
+    //     totals through a `shared` array, barrier(), give every chunk its offset (the sum of
+    //     the totals before it), and walk the chunk again writing offset + running sum.
+    //     barrier() must be reached by every invocation of the work group: do not return
+    //     early or branch around it. It reads each texel twice.
+    //  B. One invocation per line, walking it once and carrying the running sum: the lean
+    //     plan on llvmpipe (2 threads x 8 lanes; a 1024² map has 1024 lines). The 8 lanes of a
+    //     vector should be 8 neighbouring lines, so a group's lines go to its first
+    //     local_size_y invocations (gl_LocalInvocationIndex) and the rest have nothing to do.
+    //     Along rows, 8 lanes reading 8 rows at the same x can land in one L1 cache set:
+    //     `./kit bench` shows what that costs on your machine.
+    // `./kit bench --exact` gives "sat, rows + columns" on the exact clock: plan B can meet
+    // the goal, plan A costs ~1.4x as much there. Make sure any line length works (1, 7, 1000,
+    // 4096, ...). Sums grow to ~width·height: think about float32 precision (see the handout);
+    // the row pass reads the moments (W × H), the column pass your row pass's 2W × H table.
 
     // Stub: every texel of this line gets the stub value -1.
     if (line >= lineCount)

@@ -116,7 +116,7 @@ TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
     // test runs on the CPU clock), and there the verdict follows the ratio either way.
     EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=8, y")->goal, 1.2);
     EXPECT_DOUBLE_EQ(findRow(report, "gaussian r=16, x")->goal, 1.55);
-    EXPECT_DOUBLE_EQ(findRow(report, "sat, rows + columns")->goal, 2.6);
+    EXPECT_DOUBLE_EQ(findRow(report, "sat, rows + columns")->goal, 1.85);
     BenchRow row = *findRow(report, "gaussian r=8, x");
     EXPECT_FALSE(row.goalChecked);
     row.ratio = 5.0;
