@@ -58,6 +58,16 @@ TEST(Grader, CommittedGoldensMatchALiveReferenceRender) {
     EXPECT_EQ(check.exitCode, 0) << "goldens are stale; remake them with\n"
                                     "  build/shadowlab golden --solution reference --out scenes/goldens\n"
                                  << check.output;
+    // The hidden scenes' goldens too (instructor kit only): they live beside their scene files.
+    const fs::path hidden = test::root() / "scenes" / "hidden";
+    if (fs::is_directory(hidden))
+        for (const auto& f : fs::directory_iterator(hidden)) {
+            if (f.path().extension() != ".json") continue;
+            auto h = test::runCommand(test::shadowlabBinary() + " golden --check --scenes " + f.path().string());
+            EXPECT_EQ(h.exitCode, 0) << "hidden goldens are stale; remake them with\n"
+                                        "  build/shadowlab golden --solution reference --scenes "
+                                     << f.path().string() << "\n" << h.output;
+        }
 }
 
 TEST(Grader, StudentStubsScoreZeroAsNotImplemented) {
