@@ -19,7 +19,7 @@ public:
     explicit PhaseClock(std::string process)
         : process_(std::move(process)), on_(std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr),
           user_(jobUser_), sys_(jobSys_) {}
-    // A runner calls this as each job begins, with its CPU clock then (grader/intake/isolation.cpp):
+    // A runner calls this as each job begins, with its CPU clock then (grader/intake/runner_pool.cpp):
     // the job's first lap counts from here, not from the runner's start with every earlier job in it.
     static void jobStarts(const struct rusage& u) { jobUser_ = seconds(u.ru_utime), jobSys_ = seconds(u.ru_stime); }
     void lap(const char* what) {
