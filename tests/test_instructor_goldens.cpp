@@ -69,6 +69,8 @@ TEST(InstructorGoldens, HiddenGoldensGoNextToTheirSceneAndThePublicManifestKeeps
     EXPECT_EQ(stale.exitCode, 1) << stale.output;
     EXPECT_NE(stale.output.find("secret_shelf: the scene file changed"), std::string::npos) << stale.output;
     EXPECT_NE(stale.output.find("--scenes " + hidden.string()), std::string::npos) << stale.output;
+    // A hidden scene's goldens go beside its file whatever --out says: the advice leaves it out.
+    EXPECT_EQ(stale.output.find("--out"), std::string::npos) << stale.output;
 }
 
 // Every golden EXR has its PNG preview beside it (written by `golden` with the EXR), listed in

@@ -185,6 +185,7 @@ GoldenRun runGoldens(const GoldenOptions& o) {
 
     GoldenRun run;
     std::vector<std::string> staleScenes;  // as --scenes would name them
+    bool stalePublic = false;              // --out concerns public scenes only
     for (const auto& [folder, entries] : byFolder) {
         nlohmann::json manifest = readManifest(folder);
         if (!manifest.is_object()) manifest = nlohmann::json::object();
@@ -231,6 +232,7 @@ GoldenRun runGoldens(const GoldenOptions& o) {
                 run.stale.insert(run.stale.end(), v.stale.begin(), v.stale.end());
                 for (const auto& n : v.notes) run.messages.push_back("within tolerance: " + n);
                 if (!v.stale.empty()) staleScenes.push_back(gs.hidden ? gs.path.string() : gs.name);
+                if (!v.stale.empty() && !gs.hidden) stalePublic = true;
             }
             continue;
         }
@@ -266,7 +268,8 @@ GoldenRun runGoldens(const GoldenOptions& o) {
     }
     fs::remove_all(staging, ec);
     if (!run.stale.empty()) {
-        run.advice = "shadowlab golden --solution " + o.solution + " --out " + o.out.string();
+        run.advice = "shadowlab golden --solution " + o.solution;
+        if (stalePublic) run.advice += " --out " + o.out.string();
         if (!staleScenes.empty()) run.advice += " --scenes " + joined(staleScenes, ",");
     }
     return run;
