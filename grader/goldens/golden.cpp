@@ -231,8 +231,10 @@ GoldenRun runGoldens(const GoldenOptions& o) {
                                  sameRenderer, v);
                 run.stale.insert(run.stale.end(), v.stale.begin(), v.stale.end());
                 for (const auto& n : v.notes) run.messages.push_back("within tolerance: " + n);
-                if (!v.stale.empty()) staleScenes.push_back(gs.hidden ? gs.path.string() : gs.name);
-                if (!v.stale.empty() && !gs.hidden) stalePublic = true;
+                if (!v.stale.empty()) {
+                    staleScenes.push_back(gs.hidden ? gs.path.string() : gs.name);
+                    stalePublic = stalePublic || !gs.hidden;
+                }
             }
             continue;
         }

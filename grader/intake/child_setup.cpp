@@ -52,12 +52,30 @@ void setUpChild(const Limits& limits, const char* log) {
     }
     rlimit core{0, 0};  // a crashing shader compiler must not leave core files behind
     ::setrlimit(RLIMIT_CORE, &core);
+    redirectOutput(log);
+}
+
+void redirectOutput(const char* log) {
     int fd = ::open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
         ::dup2(fd, 1);
         ::dup2(fd, 2);
         ::close(fd);
     }
+}
+
+void applySettings(const ChildSettings& settings) {
+    for (const auto& [name, value] : settings) ::setenv(name.c_str(), value.c_str(), 1);
+}
+
+int runJob(const ChildSpec& spec) {
+    int code = 1;
+    try {
+        code = spec.run();
+    } catch (...) {
+    }
+    flushOutput();
+    return code;
 }
 
 // Any thread but those (a GL context's, an image library's pool) could hold a lock the child
@@ -79,10 +97,14 @@ void loadBeforeForking(const std::function<void()>& load) {
         if (!before.count(id)) kStartupThreads.insert(id);
 }
 
-void prepareFork() {
+void flushOutput() {
     std::cout.flush();
     std::cerr.flush();
     std::fflush(nullptr);
+}
+
+void prepareFork() {
+    flushOutput();
     ::malloc_trim(0);
 }
 

@@ -18,9 +18,7 @@
 extern char** environ;
 
 #include <chrono>
-#include <cstdio>
 #include <fstream>
-#include <iostream>
 #include <map>
 #include <thread>
 
@@ -58,16 +56,8 @@ pid_t startChild(const ChildSpec& spec, const Limits& limits, const std::string&
         pid_t pid = ::fork();
         if (pid != 0) return pid;
         setUpChild(limits, log.c_str());
-        for (const auto& [name, value] : childSettings(spec)) ::setenv(name.c_str(), value.c_str(), 1);
-        int code = 1;
-        try {
-            code = spec.run();
-        } catch (...) {
-        }
-        std::cout.flush();
-        std::cerr.flush();
-        std::fflush(nullptr);
-        ::_exit(code);  // not the grader's exit handlers or destructors
+        applySettings(childSettings(spec));
+        ::_exit(runJob(spec));  // not the grader's exit handlers or destructors
     }
     std::vector<std::string> env = childEnvironment(spec);
     std::vector<char*> cenv;

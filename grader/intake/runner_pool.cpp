@@ -9,9 +9,7 @@
 #include <unistd.h>
 
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
-#include <iostream>
 
 namespace sl::grader {
 namespace {
@@ -32,23 +30,11 @@ struct Ack {
         std::uint32_t index = 0;
         if (::read(jobs, &index, sizeof index) != ssize_t(sizeof index) || index >= specs.size()) ::_exit(0);
         const ChildSpec& spec = specs[index];
-        int fd = ::open(spec.logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            ::dup2(fd, 1);
-            ::dup2(fd, 2);
-            ::close(fd);
-        }
+        redirectOutput(spec.logPath.c_str());
         rusage before{}, after{};
         ::getrusage(RUSAGE_SELF, &before);
         PhaseClock::jobStarts(before);
-        Ack ack{1, 0.0};
-        try {
-            ack.code = spec.run();
-        } catch (...) {
-        }
-        std::cout.flush();
-        std::cerr.flush();
-        std::fflush(nullptr);
+        Ack ack{runJob(spec), 0.0};
         ::getrusage(RUSAGE_SELF, &after);
         ack.cpuSeconds = cpuSecondsOf(after) - cpuSecondsOf(before);
         if (::write(acks, &ack, sizeof ack) != ssize_t(sizeof ack)) ::_exit(1);
@@ -87,7 +73,7 @@ bool RunnerPool::start(size_t slot, const ChildSettings& settings) {
         for (const Runner& o : runners_)
             if (o.pid > 0) ::close(o.jobs), ::close(o.acks);
         setUpChild(limits_, "/dev/null");
-        for (const auto& [name, value] : settings) ::setenv(name.c_str(), value.c_str(), 1);
+        applySettings(settings);
         runnerLoop(specs_, jobs[0], acks[1]);
     }
     ::close(jobs[0]), ::close(acks[1]);
