@@ -142,7 +142,7 @@ void addRenderCommands(CLI::App& app, Context& ctx) {
     info->callback([&ctx] {
         auto context = createContext(parseBackendKind(ctx.backend));
         const auto& i = context->info();
-        std::cout << "backend:  " << i.backend << "\nrenderer: " << i.renderer
+        std::cout << "backend:  " << i.backend << "\nwhy:      " << i.choice << "\nrenderer: " << i.renderer
                   << "\nversion:  " << i.version << "\nmesa:     " << i.mesaVersion
                   << "\nhuge pages: " << hugePagesState() << "\n";
         ctx.exitCode = Ok;

@@ -28,6 +28,15 @@ inline GlContext& sharedContext() {
     return *context;
 }
 
+// The backend `auto` takes here: OSMesa where libOSMesa loads (Debian 12, 13), else EGL (Mesa
+// 25.1 and later have no OSMesa).
+inline std::string autoBackend() { return whyNoOSMesa().empty() ? "osmesa" : "egl"; }
+
+// A check of the OSMesa backend on a machine without it is skipped, with the reason.
+#define SL_SKIP_WITHOUT_OSMESA()                                                  \
+    if (const std::string why = ::sl::whyNoOSMesa(); !why.empty())                \
+        GTEST_SKIP() << "no OSMesa backend here: " << why
+
 inline fs::path root() { return repoRoot(); }
 inline fs::path scenePath(const std::string& name) { return root() / "scenes" / (name + ".json"); }
 

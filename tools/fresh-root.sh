@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # fresh-root.sh RELEASE [ROOT]: the README's two commands on a bare Debian, as a new user runs
-# them. Makes a minimal root with debootstrap (RELEASE: bookworm = Debian 12, trixie = Debian 13)
+# them. Makes a minimal root with debootstrap (RELEASE: bookworm = Debian 12, trixie = Debian 13,
+# forky = Debian 14, today's testing, with Mesa 26 and no OSMesa)
 # in ROOT (default /var/tmp/shadowlab-fresh-RELEASE), copies the kit's committed tree (git
 # archive HEAD) into /root/shadowlab there, and runs `./kit demo` then `./kit test` as root in a
 # chroot: ./kit must install everything itself.
@@ -9,7 +10,7 @@
 # /var/cache/shadowlab-fresh/RELEASE): the root is still bare and ./kit still installs and builds
 # everything, only without the network and compiler time; SHADOWLAB_FRESH_CACHE=none runs cold.
 set -euo pipefail
-release="${1:?usage: tools/fresh-root.sh bookworm|trixie [ROOT]}"
+release="${1:?usage: tools/fresh-root.sh bookworm|trixie|forky [ROOT]}"
 root="${2:-/var/tmp/shadowlab-fresh-$release}"
 cache="${SHADOWLAB_FRESH_CACHE:-/var/cache/shadowlab-fresh}"
 kit="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -32,7 +33,10 @@ unmount_all
 if [ ! -s "$base" ]; then
   rm -rf --one-file-system "$root"
   say "debootstrap --variant=minbase $release $root"
-  debootstrap --variant=minbase "$release" "$root" "$mirror" >"$root.debootstrap.log" 2>&1 ||
+  # A debootstrap older than the release has no script for it: testing's is sid's.
+  script=/usr/share/debootstrap/scripts/$release
+  [ -e "$script" ] || script=/usr/share/debootstrap/scripts/sid
+  debootstrap --variant=minbase "$release" "$root" "$mirror" "$script" >"$root.debootstrap.log" 2>&1 ||
     { say "debootstrap failed:"; tail -20 "$root.debootstrap.log"; exit 1; }
   tar -C "$root" -cf "$base.tmp" . && mv "$base.tmp" "$base"
 fi
@@ -42,6 +46,9 @@ tar -C "$root" -xf "$base"
 mkdir -p "$root/root/shadowlab"
 git -C "$kit" archive HEAD | tar -x -C "$root/root/shadowlab"
 cp /etc/resolv.conf "$root/etc/resolv.conf"
+# The harness's setting, not the kit's (./kit never touches apt's settings): a mirror that
+# serves a snapshot serves testing's Release file past its Valid-Until date.
+echo 'Acquire::Check-Valid-Until "false";' >"$root/etc/apt/apt.conf.d/99shadowlab-snapshot"
 
 mounts=()
 cleanup() { for ((i=${#mounts[@]}-1; i>=0; i--)); do umount -l "${mounts[$i]}" 2>/dev/null || true; done; }

@@ -35,29 +35,50 @@ static void requestSoftwareRenderer() {
     setenv("GALLIUM_DRIVER", "llvmpipe", 0);
 }
 
+// What to install for a software renderer on this build's release: no libosmesa6 where the
+// build found no OSMesa (its Mesa has none).
+static std::string installAdvice() {
+#if SHADOWLAB_HAVE_OSMESA
+    return "apt-get install libosmesa6 libegl-mesa0 libgl1-mesa-dri";
+#else
+    return "apt-get install libegl-mesa0 libgl1-mesa-dri";
+#endif
+}
+
 std::unique_ptr<GlContext> createContext(BackendKind kind) {
     requestSoftwareRenderer();
-    if (kind == BackendKind::OSMesa) return createOSMesaContext();
-    if (kind == BackendKind::Egl) return createEglContext();
-    std::string tried;
-    try {
-        return createOSMesaContext();
-    } catch (const BackendError& e) {
-        tried += std::string("  osmesa: ") + e.what() + "\n";
+    std::unique_ptr<GlContext> context;
+    if (kind != BackendKind::Auto) {
+        context = kind == BackendKind::OSMesa ? createOSMesaContext() : createEglContext();
+        context->noteChoice(std::string("asked for (--backend ") + toString(kind) + ")");
+        return context;
+    }
+    // OSMesa first where it loads: the kit's goldens were made through it. EGL gives the same
+    // bytes (Determinism.* checks it wherever both are present).
+    std::string osmesaFailure = whyNoOSMesa();
+    if (osmesaFailure.empty()) {
+        try {
+            context = createOSMesaContext();
+            context->noteChoice("auto: libOSMesa loads, and auto takes it first");
+            return context;
+        } catch (const BackendError& e) {
+            osmesaFailure = e.what();
+        }
     }
     try {
-        return createEglContext();
+        context = createEglContext();
+        context->noteChoice("auto: no usable OSMesa (" + osmesaFailure + "), so EGL");
+        return context;
     } catch (const BackendError& e) {
-        tried += std::string("  egl: ") + e.what() + "\n";
+        throw BackendError("no backend gave an OpenGL 4.5 core context. Tried:\n  osmesa: " +
+                           osmesaFailure + "\n  egl: " + e.what() +
+                           "\nInstall Mesa's software renderer: " + installAdvice() +
+                           " (or run ./kit, which does it)");
     }
-    throw BackendError(
-        "no backend gave an OpenGL 4.5 core context. Tried:\n" + tried +
-        "Install Mesa's software renderer: apt-get install libosmesa6 libegl-mesa0 "
-        "libgl1-mesa-dri (or run ./kit, which does it)");
 }
 
 bool preloadDriver(BackendKind kind) {
-    return kind != BackendKind::Egl && preloadOSMesa();
+    return kind != BackendKind::Egl && whyNoOSMesa().empty();
 }
 
 void GlContext::activate() {

@@ -31,6 +31,7 @@ struct ContextInfo {
     std::string renderer;   // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     std::string version;    // GL_VERSION, e.g. "4.5 (Core Profile) Mesa 22.3.6"
     std::string mesaVersion;  // "22.3.6", parsed from GL_VERSION ("" if not Mesa)
+    std::string choice;     // why this backend: "asked for", or `auto`'s reason
     bool isSoftware() const;  // llvmpipe / softpipe
 };
 
@@ -43,13 +44,14 @@ public:
     // context, of any backend, was current on this thread).
     void activate();
     const ContextInfo& info() const { return info_; }
+    void noteChoice(std::string why) { info_.choice = std::move(why); }
 
 protected:
     ContextInfo info_;
 };
 
 // Creates a context, makes it current and loads the gl:: functions. `Auto` takes OSMesa if
-// libOSMesa can be loaded and EGL otherwise. Unless SHADOWLAB_ALLOW_HARDWARE=1, Mesa is asked
+// libOSMesa can be loaded and EGL otherwise (info().choice says which and why). Unless SHADOWLAB_ALLOW_HARDWARE=1, Mesa is asked
 // for llvmpipe (LIBGL_ALWAYS_SOFTWARE, GALLIUM_DRIVER) so that images are reproducible.
 std::unique_ptr<GlContext> createContext(BackendKind kind);
 
@@ -62,7 +64,10 @@ std::unique_ptr<GlContext> createEglContext();
 // (the grader) calls it once first: every child then inherits the loaded and relocated library
 // instead of loading it anew (about a quarter of a grade's page faults). EGL: nothing to do.
 bool preloadDriver(BackendKind kind);
-bool preloadOSMesa();
+
+// "" when libOSMesa loads (the library stays loaded), else why not: built without OSMesa's
+// header, or the library is missing. Tests skip an OSMesa check with it.
+std::string whyNoOSMesa();
 
 // Fills `info` from the current context and loads gl::. Shared by the backends.
 void finishContextSetup(GlContext& context, ContextInfo& info, const std::string& backend);

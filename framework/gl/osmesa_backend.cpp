@@ -1,8 +1,10 @@
 // OSMesa backend: libOSMesa is dlopen()ed with RTLD_LOCAL so that its gl* exports never
 // interpose on libGL/libEGL's, and every GL function is taken from OSMesaGetProcAddress.
-// Mesa >= 25.1 dropped OSMesa; then `auto` falls back to EGL.
+// Mesa >= 25.1 dropped OSMesa: a build without its header (SHADOWLAB_HAVE_OSMESA unset) has the
+// stub at the end of this file, and `auto` falls back to EGL.
 #include "gl_context.h"
 
+#if SHADOWLAB_HAVE_OSMESA
 #include <GL/osmesa.h>
 #include <dlfcn.h>
 
@@ -86,13 +88,29 @@ std::unique_ptr<GlContext> createOSMesaContext() {
     return std::make_unique<OSMesaContextImpl>();
 }
 
-bool preloadOSMesa() {
+std::string whyNoOSMesa() {
     try {
         loadOSMesa();
-        return true;
-    } catch (const BackendError&) {
-        return false;
+        return "";
+    } catch (const BackendError& e) {
+        return e.what();
     }
 }
 
 }  // namespace sl
+
+#else  // built without OSMesa's header
+
+namespace sl {
+
+const char* const kNoOSMesaBuild =
+    "this shadowlab was built without OSMesa (CMake found no osmesa.pc: Mesa 25.1 and later ship "
+    "none); the egl backend renders the same images";
+
+std::unique_ptr<GlContext> createOSMesaContext() { throw BackendError(kNoOSMesaBuild); }
+
+std::string whyNoOSMesa() { return kNoOSMesaBuild; }
+
+}  // namespace sl
+
+#endif

@@ -10,9 +10,8 @@
 #include <cmath>
 #include <stdexcept>
 
+// OIIO is the library's own alias for its versioned namespace (oiioversion.h, 2.4 and 3.x).
 namespace {
-
-namespace OIIO = OIIO_NAMESPACE;
 
 OIIO::TypeDesc typeOf(sl::SampleType t) {
     switch (t) {
