@@ -48,4 +48,33 @@ TEST(HostileTimeouts, TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated) {
     EXPECT_TRUE(g.full("classic", "msm")) << g.output("classic", "msm");
 }
 
+// A loop in gaussian_blur.comp costs the renders that compile it (the Gaussian stage, and the
+// finals of Gaussian scenes) and nothing else: a SAT scene's final never runs that file, and
+// a final that did not render is not read as the stages' interface failing.
+TEST(HostileTimeouts, ALoopCostsOnlyTheRendersThatRunItsFile) {
+    std::string blur = test::readFile(test::root() / "reference" / "gaussian_blur.comp");
+    const std::string head = "void main()\n{\n";
+    ASSERT_NE(blur.find(head), std::string::npos) << "the reference's main changed";
+    blur.replace(blur.find(head), head.size(),
+                 head + "    float sum = float(uImageSize.x);\n"
+                        "    for (int i = 0; i < 100000; ++i)\n"
+                        "        for (int j = 0; j < 100000; ++j) sum += fract(sum * 1.0001 + 0.1);\n"
+                        "    if (sum < 0.0) return;\n");
+    auto sub = test::makeSubmission("gaussian_loop", {{"gaussian_blur.comp", blur}});
+    // classic and depth_range: Gaussian; contact and penumbra: SAT, their finals started after
+    // the Gaussian's renders have timed out.
+    auto g = test::grade("--scenes classic,depth_range,contact,penumbra --no-report --submission " +
+                             sub.string(),
+                         test::tempDir("gaussian_loop_out"));
+    ASSERT_EQ(g.run.exitCode, 0) << g.run.output;
+    EXPECT_NE(g.output("classic", "gaussian").find("timed out after"), std::string::npos)
+        << g.output("classic", "gaussian");
+    EXPECT_EQ(g.score("depth_range", "final"), 0.0) << g.output("depth_range", "final");
+    for (const char* scene : {"contact", "penumbra"}) {
+        EXPECT_TRUE(g.full(scene, "final")) << scene << ": " << g.output(scene, "final");
+        EXPECT_TRUE(g.full(scene, "sat")) << scene << ": " << g.output(scene, "sat");
+    }
+    EXPECT_EQ(g.run.output.find("while every isolated stage"), std::string::npos) << g.run.output;
+}
+
 }  // namespace sl

@@ -52,7 +52,10 @@ ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const Stag
     spec.args = {"--backend", o.backend, "grade-worker", "--job", w.toJson().dump()};
     spec.run = [w] { return workerMain(w); };
     spec.logPath = out / "log.txt";
-    spec.group = stage ? stage->name : "reference";
+    // A stage's renders compile its files only: once one loops, the others would too. A final
+    // compiles every file of its scene, so its own timeout names none of them and stops no
+    // other render (a final skips on its stages' groups: alsoRuns).
+    spec.group = !stage ? "reference" : stage->stage == Stage::Final ? "" : stage->name;
     spec.env = shaderCacheEnvironment(o);
     // Most specific first: the staged copies, then OUT, then the kit and the scene's folder.
     auto dir = [](const fs::path& p) {

@@ -209,7 +209,11 @@ std::vector<std::string> diagnose(const GradeSummary& s, const std::vector<Image
     // final fails where the isolated stages pass: the stages' interface.
     std::set<std::string> interfaceScenes;
     for (const auto& t : s.tests) {
-        if (t.stage != "final" || !shown(t.hidden) || !t.lostPoints() || t.notImplemented()) continue;
+        // Only a final that rendered: one that timed out, crashed or was not run says nothing
+        // of the interface.
+        if (t.stage != "final" || !shown(t.hidden) || !t.lostPoints() || t.notImplemented() ||
+            t.images.empty())
+            continue;
         bool othersPass = true, any = false;
         for (const auto& u : s.tests)
             if (u.scene == t.scene && u.stage != "final") any = true, othersPass = othersPass && !u.lostPoints();
