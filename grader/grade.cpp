@@ -310,8 +310,6 @@ private:
 
     // Files a stage's render compiles from the submission.
     std::vector<std::string> neededFiles(const StageRow& row, const std::string& filter) const {
-        // Without reference/, lighting takes relativeDepth from the submission's moments.glsl.
-        if (row.stage == Stage::Msm && !haveRef_) return {"msm.glsl", "moments.glsl"};
         return stageFiles(row, filter);
     }
 

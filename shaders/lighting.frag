@@ -5,7 +5,16 @@
 // and every one runs on the solution's stage files: relativeDepth (moments.glsl), the SAT's
 // satBoxAverage (sat_lookup.glsl, SL_FILTER_SAT) and, where it reconstructs with Hamburger 4MSM,
 // momentShadowIntensity (msm.glsl, SL_STAGE_MSM).
+// zf, the fragment's relative depth toward a light, is relativeDepth's, but for the grader's msm
+// stage (SL_RELATIVE_DEPTH_GIVEN): there it is the reference's, read from an image, so that the
+// stage compiles only the submission's msm.glsl. SL_RELATIVE_DEPTH_SHOWN writes that image: the
+// first shadowing light's zf in G's place.
+#ifdef SL_RELATIVE_DEPTH_GIVEN
+uniform sampler2D uGivenRelativeDepth;  // R32F, the camera's size: zf of the first shadowing light
+uniform int uFirstShadowLight;
+#else
 #include "moments.glsl"  // relativeDepth
+#endif
 #ifdef SL_FILTER_SAT
 #include "sat_lookup.glsl"
 #endif
@@ -99,7 +108,16 @@ float shadowIntensityAt(int i, int slot, int map, vec3 p) {
     q.uv = ndc.xy * 0.5 + 0.5;
     q.receiverDepth = dot(p - uLightEye[i], uLightForward[i]);
     q.depthRange = uLightDepthRange[i];
+#ifdef SL_RELATIVE_DEPTH_GIVEN
+    // Only the first shadowing light's G is graded; the others shade as lit.
+    if (i != uFirstShadowLight) return 0.0;
+    float z = texelFetch(uGivenRelativeDepth, ivec2(gl_FragCoord.xy), 0).r;
+#else
     float z = relativeDepth(q.receiverDepth, q.depthRange);
+#endif
+#ifdef SL_RELATIVE_DEPTH_SHOWN
+    return z;
+#endif
     q.zf = z - uDepthBias;
     q.tanTheta = min(sqrt(1.0 - cosTheta * cosTheta) / cosTheta, 10.0);
     q.isSpot = uLightIsSpot[i];

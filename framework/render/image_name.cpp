@@ -8,9 +8,12 @@ namespace {
 
 constexpr ImageKind kKinds[] = {ImageKind::DepthLadder, ImageKind::SatKernel, ImageKind::MomentsRaw,
                                 ImageKind::MomentsFiltered, ImageKind::SecondDepth,
-                                ImageKind::Sat, ImageKind::Final, ImageKind::Shadow};
+                                ImageKind::Sat, ImageKind::Final, ImageKind::Shadow,
+                                ImageKind::RelativeDepth};
 
-bool cameraImage(ImageKind k) { return k == ImageKind::Final || k == ImageKind::Shadow; }
+bool cameraImage(ImageKind k) {
+    return k == ImageKind::Final || k == ImageKind::Shadow || k == ImageKind::RelativeDepth;
+}
 
 // Reads "_<tag><digits>" at the front of `rest` into `value`.
 bool suffix(std::string_view& rest, std::string_view tag, int& value) {
@@ -38,6 +41,7 @@ const char* toString(ImageKind k) {
         case ImageKind::SecondDepth: return "second_depth";
         case ImageKind::DepthLadder: return "moments_raw_depth_ladder";
         case ImageKind::SatKernel: return "moments_filtered_kernel";
+        case ImageKind::RelativeDepth: return "relative_depth";
     }
     return "?";
 }

@@ -189,6 +189,8 @@ void describePasses(PassPlan& plan) {
     for (const PlannedCascade& c : plan.cascades) slots.insert({c.light, c.cascade});
     std::vector<std::string> lightingDefines = plan.defines;
     lightingDefines.push_back("SL_SHADOW_SLOTS=" + std::to_string(slots.size()));
+    if (plan.relativeDepth == RelativeDepth::Shown) lightingDefines.push_back("SL_RELATIVE_DEPTH_SHOWN");
+    if (plan.relativeDepth == RelativeDepth::Given) lightingDefines.push_back("SL_RELATIVE_DEPTH_GIVEN");
     std::vector<TextureRole> sampled;
     if (!plan.shadowLights.empty()) {
         sampled = {TextureRole::Raw};
@@ -236,6 +238,7 @@ PassPlan planPasses(const Scene& scene, const PlanOptions& options) {
     PassPlan plan;
     plan.effect = scene.shadow;
     plan.resolvedSat = options.resolveSat;
+    plan.relativeDepth = options.relativeDepth;
     if (std::string why = identityFilter(scene.shadow); !why.empty()) {
         plan.effect.filter = FilterKind::None;
         plan.leftOut.push_back(why);

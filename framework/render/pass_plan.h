@@ -92,6 +92,15 @@ struct PlannedCascade {
     float nearDepth = 0.0f, farDepth = 0.0f;  // camera view depth, world units
 };
 
+// The msm stage's isolation (docs/grading.md): its lighting-only render must not run the
+// submission's relativeDepth (moments.glsl), so it takes each fragment's zf from an image of
+// the reference's.
+enum class RelativeDepth {
+    Computed,  // relativeDepth of the solution's moments.glsl, as every frame does
+    Shown,     // computed, and written in G's place: the image "relative_depth" (no "final")
+    Given,     // read from RenderInputs::relativeDepth: lighting compiles no moments.glsl
+};
+
 struct PlanOptions {
     // Make the filtered map of a SAT scene, the `moments_filtered` image (the table itself is
     // not a moment map): a SatResolve pass evaluates the solution's satBoxAverage at every
@@ -100,6 +109,8 @@ struct PlanOptions {
     // asks for it: the goldens, the grader's reference render, `render --filtered-moments`,
     // the viewer while it shows that image.
     bool resolveSat = false;
+    // Where lighting takes zf, each fragment's relative depth toward the first shadowing light.
+    RelativeDepth relativeDepth = RelativeDepth::Computed;
 };
 
 struct PassPlan {
@@ -117,6 +128,7 @@ struct PassPlan {
     std::vector<PlannedCascade> cascades;  // lights with cascades > 1 only, light by light
     std::vector<std::string> leftOut;      // what the scene declares but cannot see, and why
     bool resolvedSat = false;              // planned with PlanOptions::resolveSat
+    RelativeDepth relativeDepth = RelativeDepth::Computed;  // PlanOptions::relativeDepth
 
     const PlannedTexture* texture(int light, TextureRole role, int cascade = 0) const;
     // Of one light's textures (one cascade's, or all with -1); light -1: all shadow textures.

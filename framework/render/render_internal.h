@@ -62,10 +62,11 @@ void runShadowPass(GlProgram& p, const PlannedPass& pass, ShadowMaps& m,
 // The lighting pass of camera `cam` into `color`/`shadow`/`depth` (created here), with program
 // `p` and every light's maps (every cascade's) bound as the lighting samples them; `plan`
 // gives the cascades' depth ranges.
+// givenRelativeDepth: the camera's zf image (RelativeDepth::Given), else null.
 void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, const Camera& cam,
                      const std::vector<LightView>& views, ShadowMapSet& maps,
                      const SceneGeometry& geometry, Texture& color,
-                     Texture& shadow, Texture& depth);
+                     Texture& shadow, Texture& depth, const Texture* givenRelativeDepth);
 
 // Dispatches `p` over a `size` image whose invocations each write uTexelsPerInvocation
 // consecutive texels along `direction` (docs/stage_contract.md, "Invocation mapping"), then a

@@ -166,8 +166,18 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
                         for (const Texture& layer : lightMaps.tex.at(role)) lightMaps.forLighting.push_back(&layer);
                 }
                 CameraTargets& t = targets[pass.camera];
+                Texture given;
+                if (plan.relativeDepth == RelativeDepth::Given) {
+                    const auto it = inputs.relativeDepth.find(pass.camera);
+                    if (it == inputs.relativeDepth.end())
+                        throw std::invalid_argument("RenderInputs::relativeDepth: no image for camera " +
+                                                    std::to_string(pass.camera));
+                    given = Texture::create(it->second.width, it->second.height, GL_R32F, GL_NEAREST);
+                    given.upload(it->second);
+                }
                 runLightingPass(prog, scene, plan, scene.cameras.at(pass.camera), views, maps,
-                                geometry, t.color, t.shadow, t.depth);
+                                geometry, t.color, t.shadow, t.depth,
+                                plan.relativeDepth == RelativeDepth::Given ? &given : nullptr);
                 break;
             }
         }
@@ -189,6 +199,10 @@ RenderResult Renderer::render(const Scene& scene, const PassPlan& plan,
     for (const auto& [ci, t] : targets) {
         const std::string suffix = ci == 0 ? "" : "_" + scene.cameras[ci].name;
         Image shadow = t.shadow.read();
+        if (plan.relativeDepth == RelativeDepth::Shown) {
+            result.images["relative_depth" + suffix] = std::move(shadow);
+            continue;
+        }
         if (!maps.empty()) noteLightingStubs(library_, row, shadow, result);
         Image color = t.color.read();
         Image rgb(color.width, color.height, 3);

@@ -50,6 +50,10 @@ struct RenderInputs {
     // channels are checked (std::invalid_argument); that it is the same scene is the caller's
     // promise.
     std::map<int, RawShadowMap> rawMaps;
+    // Per camera (index into Scene::cameras): zf of the first shadowing light at each pixel,
+    // the "relative_depth" image of a RelativeDepth::Shown render (R32F, the camera's size).
+    // Required by a plan with RelativeDepth::Given, which reads zf from it.
+    std::map<int, Image> relativeDepth;
     // Fill RenderResult::rawMaps with every shadowing light's raw map (one extra read-back
     // per light; off by default because a 2048² RGBA32F map is 64 MiB).
     bool keepRawMaps = false;
@@ -62,7 +66,8 @@ struct RenderInputs {
 struct RenderResult {
     // First shadowing light: "moments_raw", "moments_filtered", and "sat" for a SAT filter;
     // further lights add the suffix "_light<i>". First camera: "shadow" (G) and "final"
-    // (colour); further cameras add "_<camera name>".
+    // (colour); further cameras add "_<camera name>". A RelativeDepth::Shown plan gives
+    // "relative_depth" in their place.
     std::map<std::string, Image> images;
     std::vector<double> passMillis;     // one per planned pass (glFinish-bounded wall time)
     std::vector<double> passCost;       // the same passes' cost (cost_clock.h: CPU ms, all threads)

@@ -92,7 +92,8 @@ void runShadowPass(GlProgram& p, const PlannedPass& pass, ShadowMaps& m,
 void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, const Camera& cam,
                      const std::vector<LightView>& views, ShadowMapSet& maps,
                      const SceneGeometry& geometry, Texture& colorTarget,
-                     Texture& shadowTarget, Texture& depthTarget) {
+                     Texture& shadowTarget, Texture& depthTarget,
+                     const Texture* givenRelativeDepth) {
     const ShadowEffect& fx = plan.effect;
     colorTarget = Texture::create(cam.width, cam.height, GL_RGBA32F);
     shadowTarget = Texture::create(cam.width, cam.height, GL_R32F);
@@ -177,6 +178,11 @@ void runLightingPass(GlProgram& p, const Scene& scene, const PassPlan& plan, con
     p.set("uCascadeCameraPosition", fitted.position);
     p.set("uCascadeCameraForward", glm::normalize(fitted.target - fitted.position));
     setTechniqueUniforms(p, fx, unit);
+    if (givenRelativeDepth) {  // after the maps' sampler array (units 0 .. kMaxShadowMaps - 1)
+        gl::BindTextureUnit(GLuint(kMaxShadowMaps), givenRelativeDepth->id());
+        p.set("uGivenRelativeDepth", kMaxShadowMaps);
+        p.set("uFirstShadowLight", plan.shadowLights.empty() ? -1 : plan.shadowLights.front());
+    }
     p.setArray("uLightSize", lightSize);
     p.setArray("uSlotFrustumScale", slotFrustum);
     geometry.draw(p, false, true);

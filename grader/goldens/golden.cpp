@@ -1,12 +1,10 @@
-// golden: making, reading and checking golden images. They are kept small because they are
-// committed: moment maps stay float32 (their tolerance is relative and reaches 1e-4 near 0,
-// below half's precision) but with the mantissa rounded to kMomentMantissaBits bits, a
-// relative error of 2^-16 (100× inside the tolerance) that lets ZIP compress the low bits
-// away; shadow and colour images are half floats (error ≤ 5e-4, 20× inside their tolerance).
+// golden: making, reading and checking golden images, encoded as golden_encoding.h says.
 // The manifest lists each file's SHA-256 and its pixels' (`golden --check` compares pixels:
 // golden_check.h). Beside each EXR, a PNG preview (<image>.png) for people to look at.
 // Hidden scenes' goldens go into goldens/ next to their scene file, never the public folder.
 #include "golden.h"
+#include "golden_encoding.h"
+#include "graded_reference.h"
 #include "image_name.h"
 #include "golden_check.h"
 #include "raw_image.h"
@@ -38,34 +36,19 @@
 namespace sl::grader {
 namespace {
 
-constexpr int kMomentMantissaBits = 15;
-
-float roundMantissa(float v, int bits) {
-    if (!std::isfinite(v)) return v;
-    std::uint32_t u;
-    std::memcpy(&u, &v, 4);
-    const int drop = 23 - bits;
-    const std::uint32_t half = 1u << (drop - 1);
-    u = (u + half) & ~((1u << drop) - 1);  // round half up on the magnitude
-    std::memcpy(&v, &u, 4);
-    return v;
-}
-
-void writeEncoded(const Image& image, const fs::path& path, bool moments) {
+void writeEncoded(const Image& image, const fs::path& path, const std::string& name) {
     Image img = image;
-    if (moments)
-        for (float& v : img.pixels) v = roundMantissa(v, kMomentMantissaBits);
-    writeExr(img, path, moments ? SampleType::Float : SampleType::Half);
+    roundAsGolden(name, img);  // half-representable values: the Half file holds them exactly
+    writeExr(img, path, storedAsMoments(name) ? SampleType::Float : SampleType::Half);
 }
 
 // The golden `exr` just written, and its PNG preview beside it (<image>.png: the stored values
 // as render's PNGs show them, colour sRGB-encoded, at most 512 texels wide: the report's
 // preview): both into the manifest entry's "images" and "previews".
 void writeGolden(const Image& pixels, const fs::path& dir, const std::string& scene,
-                 const std::string& image, bool moments, nlohmann::json& images,
-                 nlohmann::json& previews) {
+                 const std::string& image, nlohmann::json& images, nlohmann::json& previews) {
     const fs::path exr = dir / (image + ".exr"), png = dir / (image + ".png");
-    writeEncoded(pixels, exr, moments);
+    writeEncoded(pixels, exr, image);
     const Image stored = readAnyImage(exr);
     images[image] = nlohmann::json{{"file", scene + "/" + image + ".exr"},
                                    {"sha256", sha256File(exr)},
@@ -111,35 +94,18 @@ nlohmann::json renderScene(const GradedScene& gs, const fs::path& solution, cons
                            bool standIns) {
     const Scene& scene = *gs.scene;
     Renderer renderer(ShaderLibrary::forSolution(solution, repoRoot()));
-    RenderResult result = renderer.render(scene, planPasses(scene, {.resolveSat = true}));
-    if (scene.shadow.filter == FilterKind::Sat && scene.shadow.satPerPixel)  // the sat stage's
-        result.images[kSatKernelImage] =
-            satKernelLadder(renderer.library(), scene, result.images.at("moments_raw"));
+    RenderResult full;
+    const RenderResult graded = gradedReferenceImages(renderer, scene, &full);
     const auto failures = probeFailures(scene, [&](const std::string& name) -> const Image* {
-        auto it = result.images.find(name);
-        return it == result.images.end() ? nullptr : &it->second;
+        auto it = full.images.find(name);
+        return it == full.images.end() ? nullptr : &it->second;
     });
     probeErrors.insert(probeErrors.end(), failures.begin(), failures.end());
     if (!failures.empty()) return nullptr;
     fs::create_directories(dir);
     const std::string& name = gs.name;
     nlohmann::json images = nlohmann::json::object(), previews = nlohmann::json::object();
-    for (const auto& [image, pixels] : result.images) {
-        if (isImage(image, ImageKind::Sat)) continue;  // graded through moments_filtered
-        const auto parsed = ImageName::parse(image);
-        writeGolden(pixels, dir, name, image, parsed && parsed->moments(), images, previews);
-    }
-    // The msm stage's reference: lit from the golden filtered moments as stored (rounded),
-    // exactly what a student's msm.glsl gets as input.
-    if (result.images.count("moments_filtered")) {
-        const Image stored = readAnyImage(dir / "moments_filtered.exr");
-        RenderResult isolated = renderFromMoments(renderer, scene, stored);
-        for (const auto& [image, pixels] : isolated.images)
-            if (auto n = ImageName::parse(image); n && n->kind == ImageKind::Shadow) {
-                n->msmIsolated = true;
-                writeGolden(pixels, dir, name, n->str(), false, images, previews);
-            }
-    }
+    for (const auto& [image, pixels] : graded.images) writeGolden(pixels, dir, name, image, images, previews);
     nlohmann::json entry = {{"scene_sha256", sha256File(gs.path)},
                             {"images", images},
                             {"previews", previews},

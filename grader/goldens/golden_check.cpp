@@ -16,6 +16,7 @@ std::string goldenImageStage(const std::string& image) {
     const auto n = ImageName::parse(image);
     const bool plain = n && !n->msmIsolated;
     if (image == ImageName{.kind = ImageKind::MomentsRaw}.str()) return "moments";
+    if (plain && n->kind == ImageKind::RelativeDepth) return "moments";  // zf: the moments' rule
     if (plain && n->moments()) return "gaussian";  // the sat stage has the same rule
     if (plain && n->colour()) return "final";
     return "msm";  // shadow, shadow_overhead, msm_shadow...

@@ -43,7 +43,9 @@ ChildSpec workerSpec(const GradeOptions& o, const GradedScene& scene, const Stag
     w.scene = scene.path.string();
     w.stage = stage;
     w.submission = (workDir(o) / "submission").string();
-    w.reference = haveReference() ? (repoRoot() / "reference").string() : "";
+    // Against goldens a stage never reads reference/, present or not: the student kit's
+    // self-check and the full kit's `--reference golden` are one computation.
+    w.reference = resolveReferenceMode(o.reference) == "live" ? (repoRoot() / "reference").string() : "";
     w.input = input.string();
     w.out = out.string();
     w.backend = o.backend;

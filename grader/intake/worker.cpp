@@ -14,6 +14,7 @@
 #include "image_name.h"
 
 #include "grader.h"
+#include "graded_reference.h"
 
 #include "depth_ladder.h"
 #include "sat_kernel_ladder.h"
@@ -123,14 +124,6 @@ std::optional<WorkerResult> readWorkerResult(const fs::path& folder) {
     }
 }
 
-RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered) {
-    scene.shadow.filter = FilterKind::None;
-    const PassPlan plan = planPasses(scene);
-    RenderInputs inputs;
-    if (!plan.shadowLights.empty()) inputs.filteredMoments[plan.shadowLights.front()] = filtered;
-    return renderer.render(scene, plan, inputs);
-}
-
 void runWorker(const WorkerArgs& a) {
     // Test hook (tests/test_grader_limits.cpp): make this stage's worker crash.
     const std::string stageName = a.stage ? a.stage->name : "reference";
@@ -216,10 +209,14 @@ void runWorker(const WorkerArgs& a) {
                 result.stubNotes.push_back(
                     stubNoteText(library.displayPath(library.resolve(stageFunction(f).file)), f));
     } else if (is(a, Stage::Msm)) {
-        // Lighting only, from the reference's filtered moments (a file: isolated with the
-        // goldens alone), sampled bilinearly whatever the scene's filter.
-        result = renderFromMoments(renderer, scene, readAnyImage(a.input));
+        // Lighting only, from the reference's filtered moments and each fragment's zf (files:
+        // isolated with the goldens alone; no moments.glsl is compiled).
+        result = renderFromMoments(renderer, scene, readAnyImage(a.input),
+                                   relativeDepthBeside(scene, a.input));
         clock.lap("lighting (compile, passes) and read-back");
+    } else if (!a.stage) {
+        result = gradedReferenceImages(renderer, scene);
+        clock.lap("the reference's images (compile, passes, read-back)");
     } else {
         PassPlan plan;
         if (is(a, Stage::Moments)) {
@@ -241,20 +238,6 @@ void runWorker(const WorkerArgs& a) {
         if (is(a, Stage::Moments))  // relativeDepth outside [near, far] too (depth_ladder.h)
             result.images[kDepthLadderImage] =
                 depthLadderImage(probeMoments(makeLibrary(a), relativeDepthLadder()));
-        if (!a.stage && scene.shadow.satPerPixel && scene.shadow.filter == FilterKind::Sat)
-            result.images[kSatKernelImage] =
-                satKernelLadder(makeLibrary(a), scene, result.images.at("moments_raw"));
-        if (!a.stage) {
-            // What the msm stage is compared with: the same lighting-only render, from these
-            // filtered moments, saved as "msm_<image>".
-            RenderResult isolated =
-                renderFromMoments(renderer, scene, result.images.at("moments_filtered"));
-            for (auto& [name, image] : isolated.images)
-                if (auto n = ImageName::parse(name); n && n->kind == ImageKind::Shadow) {
-                    n->msmIsolated = true;
-                    result.images[n->str()] = std::move(image);
-                }
-        }
     }
     clock.lap("stage extras (ladders, probes, isolated render)");
     fs::create_directories(a.out);

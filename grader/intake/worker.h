@@ -63,8 +63,4 @@ void runWorker(const WorkerArgs& args);
 // grade-worker` (exit_codes.h). A child forked without exec runs this (isolation.h).
 int workerMain(const WorkerArgs& args);
 
-// Lighting only, with `filtered` standing in for the first shadowing light's filtered moments
-// (bilinear, whatever the scene's filter): the msm stage, for the student and the reference.
-RenderResult renderFromMoments(Renderer& renderer, Scene scene, const Image& filtered);
-
 }  // namespace sl::grader
