@@ -126,11 +126,23 @@ TEST(FilterBenchmark, ImplementedStagesGetRatioSpreadAndGoal) {
     row.ratio = 1.19;
     EXPECT_EQ(benchVerdict(row), "✓ ≤ 1.2");
     row.ratio = 1.21;
-    EXPECT_EQ(benchVerdict(row), "✗ > 1.2");
+    EXPECT_EQ(benchVerdict(row), "✗ 1.21 > 1.2");
+    row.ratio = 1.2031;
+    EXPECT_EQ(benchVerdict(row), "✗ 1.203 > 1.2");  // "1.20 > 1.2" would read as the goal
     BenchRow wide = *findRow(report, "gaussian r=16, y");
     wide.goalChecked = true;
     wide.ratio = 1.56;
-    EXPECT_EQ(benchVerdict(wide), "✗ > 1.55");  // two digits where the goal has them
+    EXPECT_EQ(benchVerdict(wide), "✗ 1.56 > 1.55");  // two digits where the goal has them
+    wide.ratio = 1.5504;
+    EXPECT_EQ(benchVerdict(wide), "✗ 1.5504 > 1.55");
+    wide.goalChecked = false, wide.otherCompiler = true;
+    EXPECT_EQ(benchVerdict(wide), "≤ 1.55 on LLVM 15/19");
+    // The goals hold where they were measured, and only there.
+    EXPECT_EQ(goalsCompilerMismatch("llvmpipe (LLVM 15.0.6, 256 bits)"), "");
+    EXPECT_EQ(goalsCompilerMismatch("llvmpipe (LLVM 19.1.7, 256 bits)"), "");
+    for (const char* other : {"llvmpipe (LLVM 21.1.8, 256 bits)", "llvmpipe (LLVM 15.0.6, 128 bits)",
+                              "softpipe"})
+        EXPECT_NE(goalsCompilerMismatch(other).find(other), std::string::npos) << other;
 
     const auto json = nlohmann::json::parse(benchReportJson(report));
     ASSERT_EQ(json["rows"].size(), report.rows.size());

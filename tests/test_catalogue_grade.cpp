@@ -40,12 +40,25 @@ std::map<std::string, StageScore> stageScores(const json& results) {
     return stages;
 }
 
-// The reference the catalogue is graded against: live (the default), or the committed
-// goldens with SHADOWLAB_CATALOGUE_REFERENCE=golden (how the verdicts were checked against
-// goldens made on another Mesa: docs/catalogue.md).
-std::string referenceMode() {
-    const char* mode = std::getenv("SHADOWLAB_CATALOGUE_REFERENCE");
-    return mode && std::string(mode) == "golden" ? "golden" : "live";
+// Whether this machine renders as the goldens' did (the manifest's Mesa version and renderer,
+// which names LLVM and the vector width): there a live reference gives the goldens' values.
+bool onTheGoldensRenderer() {
+    const json manifest = json::parse(std::ifstream(test::root() / "scenes/goldens/manifest.json"));
+    const ContextInfo& info = test::sharedContext().info();
+    return manifest.value("mesa_version", "") == info.mesaVersion &&
+           manifest.value("renderer", "") == info.renderer;
+}
+
+// The references the catalogue is graded against, each a whole batch: the committed goldens
+// (what the student kit's self-check and the Gradescope zip grade against, on every Mesa) and,
+// where this machine renders as the goldens' did, the live reference too, whose stage scores
+// must then equal the goldens' entry by entry. SHADOWLAB_CATALOGUE_REFERENCE=live|golden grades
+// against that one only.
+std::vector<std::string> referenceModes() {
+    if (const char* mode = std::getenv("SHADOWLAB_CATALOGUE_REFERENCE"); mode && *mode)
+        return {mode};
+    if (onTheGoldensRenderer()) return {"golden", "live"};
+    return {"golden"};
 }
 
 // Every entry through `shadowlab grade`. Each entry is a complete submission: the reference's
@@ -66,9 +79,14 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
         ASSERT_FALSE(e.scenes.empty()) << e.name;
         byScene[e.scenes.front()].push_back(&e);
     }
-    for (const auto& [scene, entries] : byScene) {
-        const fs::path batch = dir / ("submissions_" + scene), out = dir / ("out_" + scene);
+    const std::vector<std::string> modes = referenceModes();
+    std::map<std::string, std::map<std::string, StageScore>> first;  // per entry, the first mode's
+    for (const auto& [scene, entries] : byScene)
+    for (const std::string& mode : modes) {
+        const fs::path batch = dir / ("submissions_" + scene),
+                       out = dir / ("out_" + scene + "_" + mode);
         for (const Entry* e : entries) {
+            if (mode != modes.front()) break;  // the same submissions
             const fs::path submission = batch / e->name;
             fs::create_directories(submission);
             for (const auto& name : stageFileNames())
@@ -82,17 +100,17 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
         const auto start = std::chrono::steady_clock::now();
         const test::CommandResult run = test::runCommand(
             test::shadowlabBinary() + " grade --batch '" + batch.string() + "' --out '" +
-            out.string() + "' --scenes " + scene + " --reference " + referenceMode() +
+            out.string() + "' --scenes " + scene + " --reference " + mode +
             " --no-report -j 2 --timeout 120");
-        std::printf("[catalogue] grade --batch of %zu entries on %s: %.1f s, exit %d\n",
-                    entries.size(), scene.c_str(),
+        std::printf("[catalogue] grade --batch of %zu entries on %s against %s: %.1f s, exit %d\n",
+                    entries.size(), scene.c_str(), mode.c_str(),
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
                         .count(),
                     run.exitCode);
 
         for (const Entry* e : entries) {
             SCOPED_TRACE(e->name + " (" + e->kind + ", stage " + e->stage + ", scene " + scene +
-                         ")");
+                         ", reference " + mode + ")");
             std::ifstream in(out / e->name / "results.json");
             if (!in) {
                 ADD_FAILURE() << "no results.json; exit " << run.exitCode << "\n" << run.output;
@@ -111,8 +129,16 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                 std::snprintf(buf, sizeof buf, "%s %.2f/%.2f  ", stage.c_str(), s.score, s.max);
                 table += buf;
             }
-            std::printf("[catalogue] grade %-31s %-11s %s\n", e->name.c_str(), e->kind.c_str(),
-                        table.c_str());
+            std::printf("[catalogue] grade %-31s %-11s %-6s %s\n", e->name.c_str(), e->kind.c_str(),
+                        mode.c_str(), table.c_str());
+            // One grade: every stage's points equal to the first reference's, to the digit.
+            if (mode == modes.front()) first[e->name] = stages;
+            else
+                for (const auto& [stage, s] : stages)
+                    EXPECT_NEAR(s.score, first[e->name][stage].score, 1e-9)
+                        << "stage " << stage << ": " << mode << " and " << modes.front()
+                        << " give different points\n" << s.output << "\n---\n"
+                        << first[e->name][stage].output;
             for (const auto& [stage, s] : stages) {
                 SCOPED_TRACE("stage " + stage + ": " + std::to_string(s.score) + " / " +
                              std::to_string(s.max) + "\n" + s.output);

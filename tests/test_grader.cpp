@@ -315,4 +315,31 @@ TEST(Grader, MsmIsIsolatedAgainstGoldensToo) {
     }
 }
 
+// The msm stage's lighting takes each fragment's zf from the reference's relative_depth image,
+// never from the submission's relativeDepth: an unclamped relativeDepth (which is wrong exactly
+// on depth_range's receivers beyond the far plane) costs msm nothing, live or against the
+// goldens alike, and a moments.glsl that does not compile leaves msm full too.
+TEST(Grader, MsmNeverRunsTheSubmissionsMomentsGlsl) {
+    const fs::path mutant = test::root() / "tests/submissions/mutants/moments_unclamped_relative_depth";
+    const fs::path unclamped = test::makeSubmission(
+        "msm_zf_unclamped", {{"moments.glsl", test::readFile(mutant / "moments.glsl")}});
+    for (const char* mode : {"golden", "live"}) {
+        auto g = test::grade(std::string("--reference ") + mode + " --submission " + unclamped.string() +
+                                 " --scenes depth_range --no-report",
+                             test::tempDir(std::string("grader_msm_zf_") + mode));
+        ASSERT_FALSE(g.results.is_null()) << g.run.output;
+        EXPECT_FALSE(g.full("depth_range", "moments")) << mode;
+        EXPECT_TRUE(g.full("depth_range", "msm")) << mode << ": " << g.output("depth_range", "msm");
+    }
+    const fs::path broken = test::makeSubmission(
+        "msm_zf_broken", {{"moments.glsl", "float relativeDepth(float d, vec2 r) { return d  }\n"}});
+    auto g = test::grade("--reference golden --submission " + broken.string() +
+                             " --scenes classic --no-report",
+                         test::tempDir("grader_msm_zf_broken"));
+    ASSERT_FALSE(g.results.is_null()) << g.run.output;
+    EXPECT_NE(g.output("classic", "moments").find("compile or link error"), std::string::npos)
+        << g.output("classic", "moments");
+    EXPECT_TRUE(g.full("classic", "msm")) << g.output("classic", "msm");
+}
+
 }  // namespace sl

@@ -2,12 +2,15 @@
 // writes an image file, files round-trip through it, its comparison figures are the textbook
 // ones, and a program without the module says which file is missing.
 #include "gl_test_support.h"
+#include "golden_encoding.h"
 #include "image_codec.h"
 #include "image_io.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <iterator>
 #include <sstream>
 
 namespace sl::test {
@@ -152,3 +155,36 @@ TEST(ImageCodec, AProgramWithoutTheModuleNamesIt) {
 
 }  // namespace
 }  // namespace sl::test
+
+namespace sl {
+
+// A live grade rounds the reference's images as the goldens store them (golden_encoding.h):
+// for half images that must be exactly what OpenEXR's half keeps, or a live grade and a grade
+// against goldens of the same render would compare different values. Checked on values across
+// half's range: normals, subnormals, ties, beyond 65504 (Inf), negative, zero.
+TEST(ImageCodec, TheLiveRoundingToHalfIsWhatAHalfExrStores) {
+    Image img(64, 64, 1);
+    std::uint32_t state = 12345;
+    auto next = [&] { return state = state * 1664525u + 1013904223u; };
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+        const float mantissa = float(next() % 1000000) / 1000000.0f;
+        const int exponent = int(next() % 44) - 28;  // 2^-28 (below half's subnormals) .. 2^15
+        img.pixels[i] = std::ldexp(1.0f + mantissa, exponent) * ((next() & 1) ? -1.0f : 1.0f);
+    }
+    const float edges[] = {0.0f, -0.0f, 65504.0f, 65519.0f, 65520.0f, 1e9f, 6.1035156e-5f,
+                           5.9604645e-8f, 2.9802322e-8f, 1.0f + 1.0f / 2048.0f, 1.0f + 3.0f / 2048.0f};
+    for (size_t i = 0; i < std::size(edges); ++i) img.pixels[i] = edges[i];
+    const fs::path file = test::tempDir("half_rounding") / "half.exr";
+    writeExr(img, file, SampleType::Half);
+    const Image stored = readImage(file);
+    ASSERT_EQ(stored.pixels.size(), img.pixels.size());
+    int wrong = 0;
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+        const float mine = grader::roundToHalf(img.pixels[i]);
+        if (std::memcmp(&mine, &stored.pixels[i], sizeof mine) != 0 && ++wrong <= 5)
+            ADD_FAILURE() << img.pixels[i] << ": rounded to " << mine << ", stored as " << stored.pixels[i];
+    }
+    EXPECT_EQ(wrong, 0);
+}
+
+}  // namespace sl
