@@ -29,6 +29,8 @@ TEST(KitGradescope, SetupAndRunAutograderGradeACorrectSubmissionToFullMarks) {
     ASSERT_EQ(test::runCommand("unzip -q '" + zip.string() + "' -d '" + ag.string() + "'").exitCode, 0);
     ASSERT_TRUE(fs::exists(ag / "setup.sh") && fs::exists(ag / "run_autograder"));
     EXPECT_NE(test::readFile(ag / "setup.sh").find("./kit deps --grader"), std::string::npos);
+    // The yardstick of ./kit check: the committed goldens, hidden scenes' included.
+    EXPECT_NE(test::readFile(ag / "run_autograder").find("--reference golden"), std::string::npos);
     for (const auto& name : stageFileNames())
         fs::copy_file(test::root() / "reference" / name, ag / "submission" / name);
 

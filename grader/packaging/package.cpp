@@ -43,14 +43,15 @@ cmake --build --preset default -j"$(nproc)" --target shadowlab
 
 const char* kRun = R"SH(#!/usr/bin/env bash
 # Gradescope run: grade $AG/submission into $AG/results/results.json (AG: /autograder, or
-# $SHADOWLAB_AUTOGRADER). Public scenes plus every scenes/hidden/*.json (after_due_date).
+# $SHADOWLAB_AUTOGRADER). Public scenes plus every scenes/hidden/*.json (after_due_date), against
+# the committed goldens: the stored images the student kit's ./kit check grades against.
 AG="${SHADOWLAB_AUTOGRADER:-/autograder}"
 cd "$AG/source"
 mkdir -p "$AG/results"
 scenes=public
 for f in scenes/hidden/*.json; do [ -e "$f" ] && scenes="$scenes,$PWD/$f"; done
 build/shadowlab grade --submission "$AG/submission" --out "$AG/results" \
-  --reference live --scenes "$scenes" --no-report
+  --reference golden --scenes "$scenes" --no-report
 exit 0  # a low score is not a failed autograder: results.json says everything
 )SH";
 
