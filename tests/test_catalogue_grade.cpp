@@ -40,6 +40,10 @@ std::map<std::string, StageScore> stageScores(const json& results) {
     return stages;
 }
 
+// Every entry's points per stage against the committed goldens, as graded on the goldens' own
+// renderer: the grade every other machine must give too.
+constexpr const char* kScoresFile = "catalogue_scores.json";
+
 // Whether this machine renders as the goldens' did (the manifest's Mesa version and renderer,
 // which names LLVM and the vector width): there a live reference gives the goldens' values.
 bool onTheGoldensRenderer() {
@@ -80,6 +84,9 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
         byScene[e.scenes.front()].push_back(&e);
     }
     const std::vector<std::string> modes = referenceModes();
+    const fs::path table = Entry::submissionsDir() / kScoresFile;
+    const json expected = fs::exists(table) ? json::parse(std::ifstream(table)) : json::object();
+    json measured = json::object();
     std::map<std::string, std::map<std::string, StageScore>> first;  // per entry, the first mode's
     for (const auto& [scene, entries] : byScene)
     for (const std::string& mode : modes) {
@@ -131,6 +138,18 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
             }
             std::printf("[catalogue] grade %-31s %-11s %-6s %s\n", e->name.c_str(), e->kind.c_str(),
                         mode.c_str(), table.c_str());
+            // One grade on every machine: against the goldens, every stage's points equal the
+            // committed table's (made on the goldens' own machine), on any Mesa or CPU.
+            if (mode == "golden") {
+                for (const auto& [stage, s] : stages) measured[e->name][stage] = s.score;
+                if (expected.contains(e->name))
+                    for (const auto& [stage, s] : stages)
+                        EXPECT_NEAR(s.score, expected[e->name].value(stage, -1.0), 1e-9)
+                            << "stage " << stage << ": not the points of " << kScoresFile
+                            << " (graded on the goldens' renderer)\n" << s.output;
+                else
+                    ADD_FAILURE() << "no row in " << kScoresFile << ": remake it (docs/catalogue.md)";
+            }
             // One grade: every stage's points equal to the first reference's, to the digit.
             if (mode == modes.front()) first[e->name] = stages;
             else
@@ -176,6 +195,10 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
             }
         }
     }
+    // SHADOWLAB_CATALOGUE_SCORES=FILE writes what was measured against the goldens (on the
+    // goldens' renderer, the committed table: docs/catalogue.md).
+    if (const char* out = std::getenv("SHADOWLAB_CATALOGUE_SCORES"); out && *out && !measured.empty())
+        std::ofstream(out) << measured.dump(1) << "\n";
     if (!HasFailure()) fs::remove_all(dir);  // kept for inspection when something failed
     if (!finalLosses.empty() && !HasFailure()) {
         // Every isolated stage passed. What is left is for the grader to fix: through a SAT,
