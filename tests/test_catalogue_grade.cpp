@@ -43,6 +43,9 @@ std::map<std::string, StageScore> stageScores(const json& results) {
 // Every entry's points per stage against the committed goldens, as graded on the goldens' own
 // renderer: the grade every other machine must give too.
 constexpr const char* kScoresFile = "catalogue_scores.json";
+// How far a score inside its ramp may move on another renderer: Mesa 26.1.6 (LLVM 21) moved 6
+// of the 52 entries by at most 0.03 points (of 100), all mutants inside a ramp.
+constexpr double kOtherRendererPoints = 0.1;
 
 // Whether this machine renders as the goldens' did (the manifest's Mesa version and renderer,
 // which names LLVM and the vector width): there a live reference gives the goldens' values.
@@ -84,6 +87,7 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
         byScene[e.scenes.front()].push_back(&e);
     }
     const std::vector<std::string> modes = referenceModes();
+    const bool sameRenderer = onTheGoldensRenderer();
     const fs::path table = Entry::submissionsDir() / kScoresFile;
     const json expected = fs::exists(table) ? json::parse(std::ifstream(table)) : json::object();
     json measured = json::object();
@@ -140,13 +144,19 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                         mode.c_str(), table.c_str());
             // One grade on every machine: against the goldens, every stage's points equal the
             // committed table's (made on the goldens' own machine), on any Mesa or CPU.
+            // On another renderer, a score strictly inside its stage's ramp moves with the
+            // pixels (the ramp is continuous): there it may differ by kOtherRendererPoints; at
+            // full marks and at zero it may not, so every stage's verdict is the same.
             if (mode == "golden") {
                 for (const auto& [stage, s] : stages) measured[e->name][stage] = s.score;
                 if (expected.contains(e->name))
-                    for (const auto& [stage, s] : stages)
-                        EXPECT_NEAR(s.score, expected[e->name].value(stage, -1.0), 1e-9)
+                    for (const auto& [stage, s] : stages) {
+                        const double want = expected[e->name].value(stage, -1.0);
+                        const bool inside = want > 1e-9 && want < s.max - 1e-9;
+                        EXPECT_NEAR(s.score, want, sameRenderer || !inside ? 1e-9 : kOtherRendererPoints)
                             << "stage " << stage << ": not the points of " << kScoresFile
                             << " (graded on the goldens' renderer)\n" << s.output;
+                    }
                 else
                     ADD_FAILURE() << "no row in " << kScoresFile << ": remake it (docs/catalogue.md)";
             }

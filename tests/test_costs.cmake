@@ -6,9 +6,10 @@
 set(longest_tests
   KitStudent.TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand 66
   KitAttack.NoShippedFunctionOrShaderScoresAsAStage 50
-  CatalogueGrade.MutantsLoseOnlyOnTheirStageAlternativesScoreFull 66
+  CatalogueGrade.MutantsLoseOnlyOnTheirStageAlternativesScoreFull 106
   ReadmeCommands.EveryReadmeAndHandoutCommandRunsAsWritten 56
   HostileTimeouts.TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated 18
+  HostileTimeouts.ALoopCostsOnlyTheRendersThatRunItsFile 18
   KitGradescope.SetupAndRunAutograderGradeACorrectSubmissionToFullMarks 19
   Grader.CommittedGoldensMatchALiveReferenceRender 15
   FairnessGrade.EitherFilterGivesTheFilterPointsToTheImplementedOne 14

@@ -19,6 +19,9 @@ struct ImageFindings {
     int band = 0;
     int reach = 0;             // the farthest of those from the edge, plus one (texels)
     long failingFar = 0;       // of the failing ones, in the half away from texel (0, 0)
+    // Of those near the border, the ones along the edges away from texel (0, 0) only: where a
+    // summed-area table's sums are largest (a border rule fails along the near edges too).
+    long failingFarEdges = 0;
     long nonFinite = 0;
     // The moments stage's relativeDepth ladder (depth_ladder.h: one row of light depths, not
     // a map, so it has no border): its rows, and the failing ones outside [near, far].
