@@ -86,6 +86,29 @@ std::string filterWords(const ShadowEffect& fx) {
     return std::string(s) + " on a " + std::to_string(fx.mapSize) + "² map";
 }
 
+// What the ladder shows with the filter it was rendered with: the SAT's per-pixel boxes follow
+// the blockers, the Gaussian's one kernel does not.
+std::string ladderWords(FilterKind filter) {
+    if (filter == FilterKind::Sat)
+        return "With the summed-area table each pixel's box is the penumbra its blockers cast "
+               "(satKernelTexels), so shadows widen with the light and stay sharp where a caster "
+               "meets the ground; wider boxes average the moments of more depths, so the "
+               "reconstructed shadow's penumbra widens.";
+    return "With the Gaussian every pixel is blurred with one kernel, its width set by the "
+           "light's size: shadows widen with the light everywhere alike, even where a caster "
+           "meets the ground (the summed-area table's per-pixel boxes keep those sharp; the "
+           "report shows them once sat.comp and sat_lookup.glsl are implemented).";
+}
+
+std::string penumbraWords(FilterKind filter) {
+    if (filter == FilterKind::Sat)
+        return "The post's shadow is sharp at its foot and widens toward its tip; the raised "
+               "slab's shadow is wide all round.";
+    return "With the Gaussian's one kernel the post's shadow is as soft at its foot as at its "
+           "tip; the summed-area table's per-pixel boxes make it sharp at the foot and wider "
+           "toward the tip.";
+}
+
 bool mentionsFilter(const std::vector<std::string>& notes, FilterKind filter) {
     for (const auto& n : notes) {
         const bool sat = n.find("sat.comp") != std::string::npos || n.find("sat_lookup.glsl") != std::string::npos;
@@ -241,8 +264,16 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
                       notesHtml(r.stubNotes) + "</figcaption></figure>\n";
         if (i == momentStep) {
             const std::string window = writeMomentPair(r, out);
-            const std::string cap = "Step " + std::to_string(i + 1) + " of the ladder (" +
-                                    filterWords(scene.shadow) + "), " + window + ".";
+            std::string cap = "Step " + std::to_string(i + 1) + " of the ladder (" +
+                              filterWords(scene.shadow) + "), " + window + ".";
+            if (scene.shadow.filter == FilterKind::Sat && scene.shadow.satPerPixel) {
+                char box[200];
+                std::snprintf(box, sizeof box, " After the blur: each texel's average over the "
+                              "search box (%.3g texels), the widest a pixel's own box can reach; "
+                              "lighting takes each pixel's box from the table.",
+                              scene.shadow.satKernelTexels);
+                cap += box;
+            }
             momentHtml =
                 "<figure><a href=\"moments_before_blur.png\"><img src=\"moments_before_blur.png\" "
                 "alt=\"moments before the blur\"></a><figcaption><b>Before the blur</b> (moments.glsl)"
@@ -292,14 +323,10 @@ int runReport(const std::string& solution, const std::string& outDir, int size,
             "moments averages the depth distribution each texel's kernel sees: sharp outlines "
             "become ramps.</p>\n<div class=\"row moments\">\n" << momentHtml
          << "</div>\n<h2>The softness ladder</h2>\n<p>The same scene, one light growing step "
-            "by step: from a point-like light to a very wide one. With the summed-area table each "
-            "pixel's box is the penumbra its blockers cast (satKernelTexels), so shadows widen with "
-            "the light and stay sharp where a caster meets the ground; wider boxes average the "
-            "moments of more depths, so the reconstructed shadow's penumbra widens.</p>\n"
-            "<div class=\"row\">\n" << ladderHtml << "</div>\n"
-         << "<h2>The penumbra grows with distance</h2>\n<p>One scene (scenes/penumbra.json): "
-            "the post's shadow is sharp at its foot and widens toward its tip's; the raised slab's "
-            "shadow is wide all round.</p>\n<div class=\"row\">\n" << penumbraHtml << "</div>\n";
+            "by step: from a point-like light to a very wide one. " << ladderWords(filter)
+         << "</p>\n<div class=\"row\">\n" << ladderHtml << "</div>\n"
+         << "<h2>The penumbra and the distance to the caster</h2>\n<p>One scene (scenes/penumbra.json). "
+         << penumbraWords(filter) << "</p>\n<div class=\"row\">\n" << penumbraHtml << "</div>\n";
     html.close();
 
     std::cout << "wrote " << (out / "index.html").string() << ", moments_before_blur.png, "

@@ -127,13 +127,19 @@ TEST(Report, AutoFilterTakesTheGaussianWhenTheSatIsAStub) {
     EXPECT_NE(r.output.find("gaussian filter"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("not implemented"), std::string::npos) << r.output;
     EXPECT_FALSE(hasMagenta(readImage(dir / "out/softness_1.png")));
+    // The captions describe the Gaussian that made the images, not the SAT's per-pixel boxes.
+    const std::string page = test::readFile(dir / "out/index.html");
+    EXPECT_EQ(page.find("stay sharp where a caster meets the ground"), std::string::npos);
+    EXPECT_EQ(page.find("sharp at its foot and widens"), std::string::npos);
+    EXPECT_NE(page.find("With the Gaussian every pixel is blurred with one kernel"), std::string::npos);
     auto forced = report(solution.string(), dir / "forced", 64, " --filter sat");
     ASSERT_EQ(forced.exitCode, 0) << forced.output;
     EXPECT_NE(forced.output.find("sat.comp"), std::string::npos) << forced.output;
     // A chosen filter says why (it was chosen), never "(..., sat filter: )".
     EXPECT_NE(forced.output.find(", sat filter: chosen with --filter sat)"), std::string::npos) << forced.output;
-    EXPECT_NE(test::readFile(dir / "forced/index.html").find("Filter: sat (chosen with --filter sat)"),
-              std::string::npos);
+    const std::string satPage = test::readFile(dir / "forced/index.html");
+    EXPECT_NE(satPage.find("Filter: sat (chosen with --filter sat)"), std::string::npos);
+    EXPECT_NE(satPage.find("stay sharp where a caster meets the ground"), std::string::npos);
 }
 
 }  // namespace sl
