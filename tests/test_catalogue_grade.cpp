@@ -1,5 +1,6 @@
 // Level 2 of the catalogue (see test_catalogue.cpp): every entry through `shadowlab grade`.
 #include "catalogue_entries.h"
+#include "kit_test_support.h"
 
 #include <unistd.h>
 
@@ -68,6 +69,80 @@ std::vector<std::string> referenceModes() {
     return {"golden"};
 }
 
+// Every entry grouped by its first scene (the catalogue lists first a scene where the bug shows).
+std::map<std::string, std::vector<const Entry*>> entriesByScene() {
+    std::map<std::string, std::vector<const Entry*>> byScene;
+    for (const Entry& e : catalogue())
+        if (!e.scenes.empty()) byScene[e.scenes.front()].push_back(&e);
+    return byScene;
+}
+
+// A batch folder of complete submissions: the reference's five files with each entry's on top
+// (a folder with the one file alone would, rightly, grade the other stages "not submitted").
+void writeBatch(const fs::path& batch, const std::vector<const Entry*>& entries) {
+    for (const Entry* e : entries) {
+        const fs::path submission = batch / e->name;
+        fs::create_directories(submission);
+        for (const auto& name : stageFileNames())
+            fs::copy_file(repoRoot() / "reference" / name, submission / name,
+                          fs::copy_options::overwrite_existing);
+        for (const auto& file : e->files)
+            fs::copy_file(Entry::submissionsDir() / file, submission / fs::path(file).filename(),
+                          fs::copy_options::overwrite_existing);
+    }
+}
+
+// `program grade --batch` of one scene's batch (`env` before it), each entry's stage points
+// read back from its results.json (a missing one is a failure, and no row).
+std::map<std::string, std::map<std::string, StageScore>> gradeBatch(
+    const std::string& program, const fs::path& batch, const fs::path& out, const std::string& scene,
+    const std::string& mode, const std::vector<const Entry*>& entries, const std::string& env = "") {
+    const auto start = std::chrono::steady_clock::now();
+    const test::CommandResult run = test::runCommand(
+        env + (env.empty() ? "" : " ") + program + " grade --batch '" + batch.string() + "' --out '" +
+        out.string() + "' --scenes " + scene + " --reference " + mode + " --no-report -j 2 --timeout 120");
+    std::printf("[catalogue] grade --batch of %zu entries on %s against %s: %.1f s, exit %d\n",
+                entries.size(), scene.c_str(), mode.c_str(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                run.exitCode);
+    std::map<std::string, std::map<std::string, StageScore>> scores;
+    for (const Entry* e : entries) {
+        std::ifstream in(out / e->name / "results.json");
+        const json results = in ? json::parse(in, nullptr, false) : json();
+        if (!results.is_object() || !results.contains("tests")) {
+            ADD_FAILURE() << e->name << ": no results.json with tests[]; exit " << run.exitCode << "\n"
+                          << run.output;
+            continue;
+        }
+        scores[e->name] = stageScores(results);
+    }
+    return scores;
+}
+
+// The committed table's points for `entry`, checked against what was graded: exact on the
+// goldens' renderer; elsewhere a score strictly inside its stage's ramp moves with the pixels
+// (the ramp is continuous) and may differ by kOtherRendererPoints, while at full marks and at
+// zero it may not, so every stage's verdict is the same.
+void expectTheTablesPoints(const json& expected, const Entry& e,
+                           const std::map<std::string, StageScore>& stages, bool sameRenderer) {
+    if (!expected.contains(e.name)) {
+        ADD_FAILURE() << "no row in " << kScoresFile << ": remake it (docs/catalogue.md)";
+        return;
+    }
+    for (const auto& [stage, s] : stages) {
+        const double want = expected[e.name].value(stage, -1.0);
+        const bool inside = want > 1e-9 && want < s.max - 1e-9;
+        EXPECT_NEAR(s.score, want, sameRenderer || !inside ? 1e-9 : kOtherRendererPoints)
+            << "stage " << stage << ": not the points of " << kScoresFile
+            << " (graded on the goldens' renderer)\n" << s.output;
+    }
+}
+
+json expectedTable() {
+    const fs::path table = Entry::submissionsDir() / kScoresFile;
+    return fs::exists(table) ? json::parse(std::ifstream(table)) : json::object();
+}
+
 // Every entry through `shadowlab grade`. Each entry is a complete submission: the reference's
 // five files with the entry's file(s) on top (a folder with the one file alone would, rightly,
 // grade the other stages "not submitted"). Graded on its first scene (the catalogue lists
@@ -81,127 +156,80 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
     // delete this one's folders.
     const fs::path dir = test::tempDir("catalogue_grade_" + std::to_string(getpid()));
     std::string finalLosses;  // alternatives that lose points on the end-to-end image only
-    std::map<std::string, std::vector<const Entry*>> byScene;
-    for (const Entry& e : catalogue()) {
-        ASSERT_FALSE(e.scenes.empty()) << e.name;
-        byScene[e.scenes.front()].push_back(&e);
-    }
+    for (const Entry& e : catalogue()) ASSERT_FALSE(e.scenes.empty()) << e.name;
     const std::vector<std::string> modes = referenceModes();
     const bool sameRenderer = onTheGoldensRenderer();
-    const fs::path table = Entry::submissionsDir() / kScoresFile;
-    const json expected = fs::exists(table) ? json::parse(std::ifstream(table)) : json::object();
+    const json expected = expectedTable();
     json measured = json::object();
     std::map<std::string, std::map<std::string, StageScore>> first;  // per entry, the first mode's
-    for (const auto& [scene, entries] : byScene)
-    for (const std::string& mode : modes) {
-        const fs::path batch = dir / ("submissions_" + scene),
-                       out = dir / ("out_" + scene + "_" + mode);
-        for (const Entry* e : entries) {
-            if (mode != modes.front()) break;  // the same submissions
-            const fs::path submission = batch / e->name;
-            fs::create_directories(submission);
-            for (const auto& name : stageFileNames())
-                fs::copy_file(repoRoot() / "reference" / name, submission / name,
-                              fs::copy_options::overwrite_existing);
-            for (const auto& file : e->files)
-                fs::copy_file(Entry::submissionsDir() / file,
-                              submission / fs::path(file).filename(),
-                              fs::copy_options::overwrite_existing);
-        }
-        const auto start = std::chrono::steady_clock::now();
-        const test::CommandResult run = test::runCommand(
-            test::shadowlabBinary() + " grade --batch '" + batch.string() + "' --out '" +
-            out.string() + "' --scenes " + scene + " --reference " + mode +
-            " --no-report -j 2 --timeout 120");
-        std::printf("[catalogue] grade --batch of %zu entries on %s against %s: %.1f s, exit %d\n",
-                    entries.size(), scene.c_str(), mode.c_str(),
-                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                        .count(),
-                    run.exitCode);
-
-        for (const Entry* e : entries) {
-            SCOPED_TRACE(e->name + " (" + e->kind + ", stage " + e->stage + ", scene " + scene +
-                         ", reference " + mode + ")");
-            std::ifstream in(out / e->name / "results.json");
-            if (!in) {
-                ADD_FAILURE() << "no results.json; exit " << run.exitCode << "\n" << run.output;
-                continue;
-            }
-            const json results = json::parse(in, nullptr, false);
-            if (!results.is_object() || !results.contains("tests")) {
-                ADD_FAILURE() << "results.json without tests[]";
-                continue;
-            }
-            const auto stages = stageScores(results);
-            EXPECT_TRUE(stages.count(e->stage)) << "no test tagged stage:" << e->stage;
-            std::string table;
-            for (const auto& [stage, s] : stages) {
-                char buf[96];
-                std::snprintf(buf, sizeof buf, "%s %.2f/%.2f  ", stage.c_str(), s.score, s.max);
-                table += buf;
-            }
-            std::printf("[catalogue] grade %-31s %-11s %-6s %s\n", e->name.c_str(), e->kind.c_str(),
-                        mode.c_str(), table.c_str());
-            // One grade on every machine: against the goldens, every stage's points equal the
-            // committed table's (made on the goldens' own machine), on any Mesa or CPU.
-            // On another renderer, a score strictly inside its stage's ramp moves with the
-            // pixels (the ramp is continuous): there it may differ by kOtherRendererPoints; at
-            // full marks and at zero it may not, so every stage's verdict is the same.
-            if (mode == "golden") {
-                for (const auto& [stage, s] : stages) measured[e->name][stage] = s.score;
-                if (expected.contains(e->name))
-                    for (const auto& [stage, s] : stages) {
-                        const double want = expected[e->name].value(stage, -1.0);
-                        const bool inside = want > 1e-9 && want < s.max - 1e-9;
-                        EXPECT_NEAR(s.score, want, sameRenderer || !inside ? 1e-9 : kOtherRendererPoints)
-                            << "stage " << stage << ": not the points of " << kScoresFile
-                            << " (graded on the goldens' renderer)\n" << s.output;
-                    }
-                else
-                    ADD_FAILURE() << "no row in " << kScoresFile << ": remake it (docs/catalogue.md)";
-            }
-            // One grade: every stage's points equal to the first reference's, to the digit.
-            if (mode == modes.front()) first[e->name] = stages;
-            else
-                for (const auto& [stage, s] : stages)
-                    EXPECT_NEAR(s.score, first[e->name][stage].score, 1e-9)
-                        << "stage " << stage << ": " << mode << " and " << modes.front()
-                        << " give different points\n" << s.output << "\n---\n"
-                        << first[e->name][stage].output;
-            for (const auto& [stage, s] : stages) {
-                SCOPED_TRACE("stage " + stage + ": " + std::to_string(s.score) + " / " +
-                             std::to_string(s.max) + "\n" + s.output);
-                if (e->mutant()) {
-                    // The end-to-end "final" stage may lose points too: not checked. Nor may
-                    // "robustness" for an msm mutant: it probes the same msm.glsl.
-                    const bool sameFile = e->stage == "msm" && stage == "robustness";
-                    if (stage != e->stage && stage != "final" && !sameFile) {
-                        EXPECT_TRUE(s.full()) << "a mutant must not lose points on another stage";
-                    }
-                } else if (stage == "robustness" && e->stage == "msm" && e->robustnessReported) {
-                    // Correct on every scene, yet a solve may be less stable on the adversarial
-                    // hard cases (msm_cramer: non-monotone on 16 of 289): that is what the
-                    // robustness stage is for, so it is reported, not required (catalogue.md).
-                    if (!s.full()) std::printf("[catalogue] %s: robustness %.2f / %.2f\n",
-                                               e->name.c_str(), s.score, s.max);
-                } else if (stage != "final") {
-                    EXPECT_TRUE(s.full()) << "an alternative must score full marks";
-                } else if (!s.full()) {
-                    finalLosses += e->name + ": final " + std::to_string(s.score) + " / " +
-                                   std::to_string(s.max) + " on " + scene + "; ";
+    for (const auto& [scene, entries] : entriesByScene()) {
+        const fs::path batch = dir / ("submissions_" + scene);
+        writeBatch(batch, entries);
+        for (const std::string& mode : modes) {
+            const auto graded = gradeBatch(test::shadowlabBinary(), batch,
+                                           dir / ("out_" + scene + "_" + mode), scene, mode, entries);
+            for (const Entry* e : entries) {
+                SCOPED_TRACE(e->name + " (" + e->kind + ", stage " + e->stage + ", scene " + scene +
+                             ", reference " + mode + ")");
+                if (!graded.count(e->name)) continue;
+                const auto& stages = graded.at(e->name);
+                EXPECT_TRUE(stages.count(e->stage)) << "no test tagged stage:" << e->stage;
+                std::string table;
+                for (const auto& [stage, s] : stages) {
+                    char buf[96];
+                    std::snprintf(buf, sizeof buf, "%s %.2f/%.2f  ", stage.c_str(), s.score, s.max);
+                    table += buf;
                 }
-            }
-            if (e->mutant()) {
-                // A mutant loses on its own stage. msm.glsl is graded twice, on the scenes'
-                // images (msm) and on the hard cases (robustness), and either counts: a missing
-                // moment bias is off on 12 hard cases on every Mesa and against the goldens,
-                // while on classic's images it is a margin case (97.3 % against the ramp's 98 %,
-                // live on Mesa 22.3.6; full against the goldens on Mesa 25.0.7).
-                const auto lost = [&](const std::string& stage) {
-                    return stages.count(stage) && !stages.at(stage).full();
-                };
-                EXPECT_TRUE(lost(e->stage) || (e->stage == "msm" && lost("robustness")))
-                    << "a mutant must lose points on its own stage";
+                std::printf("[catalogue] grade %-31s %-11s %-6s %s\n", e->name.c_str(), e->kind.c_str(),
+                            mode.c_str(), table.c_str());
+                // One grade on every machine: against the goldens, the committed table's points.
+                if (mode == "golden") {
+                    for (const auto& [stage, s] : stages) measured[e->name][stage] = s.score;
+                    expectTheTablesPoints(expected, *e, stages, sameRenderer);
+                }
+                // One grade: every stage's points equal to the first reference's, to the digit.
+                if (mode == modes.front()) first[e->name] = stages;
+                else
+                    for (const auto& [stage, s] : stages)
+                        EXPECT_NEAR(s.score, first[e->name][stage].score, 1e-9)
+                            << "stage " << stage << ": " << mode << " and " << modes.front()
+                            << " give different points\n" << s.output << "\n---\n"
+                            << first[e->name][stage].output;
+                for (const auto& [stage, s] : stages) {
+                    SCOPED_TRACE("stage " + stage + ": " + std::to_string(s.score) + " / " +
+                                 std::to_string(s.max) + "\n" + s.output);
+                    if (e->mutant()) {
+                        // The end-to-end "final" stage may lose points too: not checked. Nor may
+                        // "robustness" for an msm mutant: it probes the same msm.glsl.
+                        const bool sameFile = e->stage == "msm" && stage == "robustness";
+                        if (stage != e->stage && stage != "final" && !sameFile) {
+                            EXPECT_TRUE(s.full()) << "a mutant must not lose points on another stage";
+                        }
+                    } else if (stage == "robustness" && e->stage == "msm" && e->robustnessReported) {
+                        // Correct on every scene, yet a solve may be less stable on the adversarial
+                        // hard cases (msm_cramer: non-monotone on 16 of 289): that is what the
+                        // robustness stage is for, so it is reported, not required (catalogue.md).
+                        if (!s.full()) std::printf("[catalogue] %s: robustness %.2f / %.2f\n",
+                                                   e->name.c_str(), s.score, s.max);
+                    } else if (stage != "final") {
+                        EXPECT_TRUE(s.full()) << "an alternative must score full marks";
+                    } else if (!s.full()) {
+                        finalLosses += e->name + ": final " + std::to_string(s.score) + " / " +
+                                       std::to_string(s.max) + " on " + scene + "; ";
+                    }
+                }
+                if (e->mutant()) {
+                    // A mutant loses on its own stage. msm.glsl is graded twice, on the scenes'
+                    // images (msm) and on the hard cases (robustness), and either counts: a missing
+                    // moment bias is off on 12 hard cases on every Mesa and against the goldens,
+                    // while on classic's images it is a margin case (97.3 % against the ramp's 98 %,
+                    // live on Mesa 22.3.6; full against the goldens on Mesa 25.0.7).
+                    const auto lost = [&](const std::string& stage) {
+                        return stages.count(stage) && !stages.at(stage).full();
+                    };
+                    EXPECT_TRUE(lost(e->stage) || (e->stage == "msm" && lost("robustness")))
+                        << "a mutant must lose points on its own stage";
+                }
             }
         }
     }
@@ -220,6 +248,35 @@ TEST(CatalogueGrade, MutantsLoseOnlyOnTheirStageAlternativesScoreFull) {
                         "final image only (every isolated stage scores as required): "
                      << finalLosses;
     }
+}
+
+// The self-check is the autograder's grade: every entry graded by the packed student kit's
+// own program (built from the tarball, no reference/, its own goldens) gets the committed table's
+// points, the autograder's (the full kit against the goldens; live on the goldens' renderer,
+// which the test above shows equal).
+TEST(CatalogueGrade, ThePackedStudentKitGradesEveryEntryAsTheAutograder) {
+    if (!graderBuilt()) GTEST_SKIP() << "grader not built yet";
+    const fs::path dir = test::tempDir("catalogue_student_kit_" + std::to_string(getpid()));
+    const auto unpacked = test::unpackStudentKit(dir);
+    ASSERT_EQ(unpacked.error, "");
+    ASSERT_FALSE(fs::exists(unpacked.root / "reference"));
+    auto build = test::buildKitProgram(unpacked.root);
+    ASSERT_EQ(build.exitCode, 0) << build.output;
+    const std::string program = (unpacked.root / "build/shadowlab").string();
+    const json expected = expectedTable();
+    const bool sameRenderer = onTheGoldensRenderer();
+    for (const auto& [scene, entries] : entriesByScene()) {
+        const fs::path batch = dir / ("submissions_" + scene);
+        writeBatch(batch, entries);
+        // --reference golden said, though the student kit's auto means it too.
+        const auto graded = gradeBatch(program, batch, dir / ("out_" + scene), scene, "golden", entries,
+                                       "env -u SHADOWLAB_ROOT -u SHADOWLAB_BUILD");
+        for (const Entry* e : entries) {
+            SCOPED_TRACE(e->name + " (" + e->kind + ", scene " + scene + ", the student kit)");
+            if (graded.count(e->name)) expectTheTablesPoints(expected, *e, graded.at(e->name), sameRenderer);
+        }
+    }
+    if (!HasFailure()) fs::remove_all(dir);
 }
 
 }  // namespace

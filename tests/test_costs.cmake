@@ -7,6 +7,7 @@ set(longest_tests
   KitStudent.TarballHasNoSolutionBuildsAndRunsEveryDocumentedCommand 66
   KitAttack.NoShippedFunctionOrShaderScoresAsAStage 50
   CatalogueGrade.MutantsLoseOnlyOnTheirStageAlternativesScoreFull 106
+  CatalogueGrade.ThePackedStudentKitGradesEveryEntryAsTheAutograder 90
   ReadmeCommands.EveryReadmeAndHandoutCommandRunsAsWritten 56
   HostileTimeouts.TheLimitFollowsTheReferenceAndATimeoutIsNotRepeated 18
   HostileTimeouts.ALoopCostsOnlyTheRendersThatRunItsFile 18
