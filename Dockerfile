@@ -1,4 +1,4 @@
-# Shadowlab in a container, for macOS, Windows and any Linux that is not Debian 12 or 13: the
+# Shadowlab in a container, for macOS, Windows and any Linux that is not Debian 12, 13 or 14: the
 # same Debian packages ./kit installs, and the kit built once. Inside, the README's two commands
 # run as they do on Debian (`./kit demo`, `./kit test`).
 #   docker build -t shadowlab .                        # Debian 12 (Mesa 22.3)
