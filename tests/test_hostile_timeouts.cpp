@@ -75,6 +75,15 @@ TEST(HostileTimeouts, ALoopCostsOnlyTheRendersThatRunItsFile) {
         EXPECT_TRUE(g.full(scene, "sat")) << scene << ": " << g.output(scene, "sat");
     }
     EXPECT_EQ(g.run.output.find("while every isolated stage"), std::string::npos) << g.run.output;
+    // The reasons say it: the loop, the render not run and why, the files a final runs; no
+    // hint reads a timeout as a wrong blur.
+    EXPECT_NE(g.output("depth_range", "gaussian").find("not run here: this stage timed out after"),
+              std::string::npos) << g.output("depth_range", "gaussian");
+    const std::string final = g.output("classic", "final");
+    if (final.find("not run here") == std::string::npos)  // classic's final ran out of time itself
+        EXPECT_NE(final.find("this render runs submission/moments.glsl, submission/msm.glsl, "
+                             "submission/gaussian_blur.comp"), std::string::npos) << final;
+    EXPECT_EQ(g.run.output.find("look at gaussian_blur.comp (weights"), std::string::npos) << g.run.output;
 }
 
 }  // namespace sl

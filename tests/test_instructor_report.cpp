@@ -23,6 +23,7 @@ TestResult result(const std::string& scene, const std::string& stage, double sco
     TestResult t;
     t.scene = scene, t.stage = stage, t.score = score, t.maxScore = max, t.hidden = hidden;
     t.output = score < max ? "97.00% within tolerance\ndetail line\n" : "full marks\n";
+    t.images = {stage == "final" ? "final" : stage == "msm" ? "shadow" : "moments_filtered"};  // compared
     return t;
 }
 

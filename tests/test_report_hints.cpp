@@ -66,4 +66,17 @@ TEST(ReportHints, WrongBoxWidthsWithRightAveragesNameTheKernelNotTheTable) {
     EXPECT_EQ(text.find("float sum"), std::string::npos) << text;
 }
 
+// Hard cases at depths 0 and 1 fail without the guards, not without the bias: the guards are
+// named there, and the bias where the bias alone is missing.
+TEST(ReportHints, MissingGuardsAreNamedAsGuardsAndAMissingBiasAsTheBias) {
+    const std::string guards =
+        findings("unguarded", {{"msm.glsl", submitted("fragile/unguarded/msm.glsl")}}, "classic");
+    EXPECT_NE(guards.find("the guards look missing"), std::string::npos) << guards;
+    EXPECT_EQ(guards.find("the moment bias looks missing"), std::string::npos) << guards;
+    const std::string bias =
+        findings("no_bias", {{"msm.glsl", submitted("mutants/msm_no_moment_bias/msm.glsl")}}, "classic");
+    EXPECT_NE(bias.find("the moment bias looks missing"), std::string::npos) << bias;
+    EXPECT_EQ(bias.find("the guards look missing"), std::string::npos) << bias;
+}
+
 }  // namespace sl

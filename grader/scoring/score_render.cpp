@@ -152,13 +152,15 @@ std::string testScene(const StageRow* stage, const GradedScene& scene) {
 // What the child's failure means for the student.
 std::string failureText(const ChildResult& c, const GradeOptions& o) {
     switch (c.kind) {
-        case ChildResult::TimedOut:
-            return "timed out after " + fixedDigits(c.limitSeconds, 0) + " s" + c.limitNote +
-                   ": the render was stopped (look for a loop that never ends)" +
-                   (!c.skipped ? ""
-                    : c.skippedAfter.empty() ? "; not run here: this stage timed out on another scene"
-                    : "; not run here: the " + c.skippedAfter +
-                          " stage timed out, and this render runs its files too");
+        case ChildResult::TimedOut: {
+            const std::string limit = "timed out after " + fixedDigits(c.limitSeconds, 0) + " s" + c.limitNote;
+            if (!c.skipped) return limit + ": the render was stopped (look for a loop that never ends)";
+            // Not run: another render of the same files ran out of time.
+            return (c.skippedAfter.empty() ? "not run here: this stage " + limit + " on another scene"
+                                           : "not run here: the " + c.skippedAfter + " stage " + limit +
+                                                 ", and this render runs its files too") +
+                   " (look for a loop that never ends)";
+        }
         case ChildResult::Signalled: return "crashed: " + signalName(c.signal);
         case ChildResult::StartFailed: return "the grader could not start its worker";
         case ChildResult::Exited: break;
@@ -202,6 +204,13 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
     }
     if (!(job.child.kind == ChildResult::Exited && job.child.exitCode == 0)) {
         t.output = failureText(job.child, options);
+        // A final runs every file of its scene: its own timeout cannot tell which one loops.
+        if (job.stage.stage == Stage::Final && job.child.kind == ChildResult::TimedOut && !job.child.skipped) {
+            std::string files;
+            for (const auto& f : stageFiles(job.stage, job.scene.filter))
+                files += (files.empty() ? "" : ", ") + std::string("submission/") + f;
+            t.output += "; this render runs " + files + ": each stage's own test says which one loops";
+        }
         return t;
     }
     const std::optional<WorkerResult> worker = readWorkerResult(job.out);
@@ -268,7 +277,7 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
         if (c.worstX >= 0 && c.worst > 1.0)
             detail << worstTexelText(name, c, job.scene.scene->shadow.mapSize, ref.width) << "\n";
         if (c.worst > rubric.worstTexelFactor && worstWhere.empty())
-            worstWhere = name == kSatKernelImage ? std::string("a box width of satKernelTexels")
+            worstWhere = name == kSatKernelImage ? std::string("a box width (satKernelTexels, from the table)")
                        : worstAtBorder(c, ref) ? std::string("a texel at the map's border (look at the border rule)")
                        : "a texel inside the map, at (" + std::to_string(c.worstX) + ", " +
                              std::to_string(c.worstY) + "), away from the border";
