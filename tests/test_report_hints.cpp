@@ -79,4 +79,20 @@ TEST(ReportHints, MissingGuardsAreNamedAsGuardsAndAMissingBiasAsTheBias) {
     EXPECT_EQ(bias.find("the guards look missing"), std::string::npos) << bias;
 }
 
+// A wrong power in computeMoments with z itself right is computeMoments's, not relativeDepth's;
+// relativeDepth without its clamp is still told to clamp.
+TEST(ReportHints, AWrongPowerWithTheRightDepthNamesComputeMoments) {
+    std::string moments = test::readFile(test::root() / "reference/moments.glsl");
+    const std::string b4 = "z2 * z2);";
+    ASSERT_NE(moments.find(b4), std::string::npos) << "the reference's computeMoments changed";
+    moments.replace(moments.find(b4), b4.size(), "z2 * z2 * z);");
+    const std::string power = findings("b4_wrong", {{"moments.glsl", moments}}, "classic");
+    EXPECT_NE(power.find("relativeDepth is right, look at computeMoments"), std::string::npos) << power;
+    const std::string clamp = findings(
+        "unclamped", {{"moments.glsl", submitted("mutants/moments_unclamped_relative_depth/moments.glsl")}},
+        "classic");
+    EXPECT_NE(clamp.find("relativeDepth must clamp"), std::string::npos) << clamp;
+    EXPECT_EQ(clamp.find("look at computeMoments"), std::string::npos) << clamp;
+}
+
 }  // namespace sl

@@ -86,6 +86,9 @@ std::string depthLadderText(const ImageFindings& f) {
         return text + " (" + std::to_string(f.failingOutsideRange) + " outside [near, far], " +
                std::to_string(f.failing - f.failingOutsideRange) +
                " inside): look at relativeDepth, then computeMoments";
+    if (f.failingDepth == 0)  // every failing rung has the right z: the powers are off
+        return text + ", inside [near, far], each with the right b1 = z: relativeDepth is right, "
+                      "look at computeMoments";
     return text + ", inside [near, far]: look at relativeDepth, then computeMoments";
 }
 

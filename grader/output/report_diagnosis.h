@@ -27,6 +27,8 @@ struct ImageFindings {
     // a map, so it has no border): its rows, and the failing ones outside [near, far].
     bool depthLadder = false;
     long rows = 0, failingOutsideRange = 0;
+    // Of the failing rows, those whose b1 (z, relativeDepth's value) is off too; -1: not known.
+    long failingDepth = -1;
 };
 
 // Counts an error map's failing texels (> 1) and those near the border; for the depth

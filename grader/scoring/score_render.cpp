@@ -283,6 +283,15 @@ TestResult scoreRender(const RenderToScore& job, const GradeOptions& options, co
                              std::to_string(c.worstY) + "), away from the border";
         ImageFindings f = findImageProblems(c.errorMap, c.nonFinite, name);
         f.scene = t.scene, f.stage = t.stage, f.image = name, f.hidden = t.hidden;
+        if (ladder && mine.width == ref.width && mine.channels == ref.channels) {
+            // Which failing rungs have b1 = z off too (the moments' tolerance).
+            f.failingDepth = 0;
+            for (int x = 0; x < ref.width; ++x) {
+                const double z = ref.at(x, 0, 0), d = std::abs(double(mine.at(x, 0, 0)) - z);
+                if (!(c.errorMap.at(x, 0, 0) <= 1.0f) && !(d <= rubric.momentsAbs + rubric.momentsRel * std::abs(z)))
+                    ++f.failingDepth;
+            }
+        }
         if (report) report->add(t, name, ref, mine, c, f);
         (ladder ? ladderFraction : mapsFraction) =
             std::min(ladder ? ladderFraction : mapsFraction, c.error.empty() ? c.fraction : 0.0);
