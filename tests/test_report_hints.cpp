@@ -95,4 +95,16 @@ TEST(ReportHints, AWrongPowerWithTheRightDepthNamesComputeMoments) {
     EXPECT_EQ(clamp.find("look at computeMoments"), std::string::npos) << clamp;
 }
 
+// A wrong solve fails ordinary two- and three-point distributions too: that is the solve, not a
+// missing guard or bias (the second blind student's swapped roots were told "the guards").
+TEST(ReportHints, AWrongSolveIsTheSolveNotAGuardOrTheBias) {
+    for (const char* mutant : {"msm_roots_swapped", "msm_forward_substitution_sign"}) {
+        const std::string text = findings(
+            mutant, {{"msm.glsl", submitted(std::string("mutants/") + mutant + "/msm.glsl")}}, "classic");
+        EXPECT_NE(text.find("the solve itself looks off"), std::string::npos) << mutant << "\n" << text;
+        EXPECT_EQ(text.find("the guards look missing"), std::string::npos) << mutant << "\n" << text;
+        EXPECT_EQ(text.find("the moment bias looks missing"), std::string::npos) << mutant << "\n" << text;
+    }
+}
+
 }  // namespace sl
