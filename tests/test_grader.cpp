@@ -228,7 +228,8 @@ namespace sl {
 // (tests/submissions/fragile/naive_sat) is a correct algorithm with too little precision: it
 // loses all of contact's SAT points (95.7 % of the box means within tolerance, below the sat
 // ramp's zero, where every correct variant of the family has >= 99.999 %), keeps wide_blur's
-// — half the stage, as the handout and docs/numerics.md say — and only the SAT stage notices.
+// (a quarter of the stage each, as the handout and docs/numerics.md say), and only the SAT stage
+// notices.
 TEST(Grader, PlainFloatSatTableLosesPartOfTheSatPointsOnly) {
     const fs::path naive = test::root() / "tests/submissions/fragile/naive_sat";
     fs::path sub = test::makeSubmission(
