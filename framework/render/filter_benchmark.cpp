@@ -324,7 +324,7 @@ std::string formatBenchReport(const BenchReport& report) {
                "any machine; a CPU-time ratio is another figure, and the machine's load moves it\n";
     else if (!report.goalsNote.empty())
         out += "\n" + report.goalsNote + "\n";
-    else if (report.size != kBenchGoalSize) {
+    if (costCountsInstructions() && report.size != kBenchGoalSize) {
         std::snprintf(line, sizeof line,
                       "\nthe goals of the copy-measured rows hold for %d² maps (`./kit bench --exact` "
                       "without --size): at %d² a pass's fixed cost per dispatch weighs differently, "
