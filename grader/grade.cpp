@@ -147,7 +147,7 @@ private:
             for (const StageRow& row : stageTable()) {
                 if (!row.perScene || (*row.filter && row.filter != scenes_[i].filter)) continue;
                 Job job = makeJob(i, &row, workDir(o_) / scenes_[i].name / row.name);
-                job.missing = firstMissing(neededFiles(row, scenes_[i].filter));
+                job.missing = firstMissing(stageFiles(row, scenes_[i].filter));
                 (*row.input ? needInput : own).push_back(job);
             }
         }
@@ -309,10 +309,6 @@ private:
     const bool timing_ = std::getenv("SHADOWLAB_GRADER_TIMING") != nullptr;  // per-job times too
 
     // Files a stage's render compiles from the submission.
-    std::vector<std::string> neededFiles(const StageRow& row, const std::string& filter) const {
-        return stageFiles(row, filter);
-    }
-
     fs::path referenceFile(size_t scene, const std::string& image) const {
         const fs::path refs = o_.referenceImages.empty() ? workDir(o_) / "ref" : o_.referenceImages;
         if (mode_ == "live") return refs / scenes_[scene].name / (image + ".raw");

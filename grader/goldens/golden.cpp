@@ -36,10 +36,9 @@
 namespace sl::grader {
 namespace {
 
+// `image` is rounded already (gradedReferenceImages): the Half file holds its values exactly.
 void writeEncoded(const Image& image, const fs::path& path, const std::string& name) {
-    Image img = image;
-    roundAsGolden(name, img);  // half-representable values: the Half file holds them exactly
-    writeExr(img, path, storedAsMoments(name) ? SampleType::Float : SampleType::Half);
+    writeExr(image, path, storedAsMoments(name) ? SampleType::Float : SampleType::Half);
 }
 
 // The golden `exr` just written, and its PNG preview beside it (<image>.png: the stored values
